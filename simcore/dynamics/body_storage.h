@@ -1,0 +1,58 @@
+#pragma once
+// Body state as a structure of arrays. Every per-body quantity lives in its own contiguous array,
+// indexed by a dense index; stable BodyIds map to dense indices through a slot table, so removing a
+// body (swap with the last, pop) never invalidates other handles.
+
+#include "simcore/dynamics/body.h"
+
+#include <string>
+#include <vector>
+
+namespace simcore {
+
+class BodyStorage {
+public:
+    // Dense arrays, all of size size(). The step iterates these directly.
+    std::vector<Vec3> centerOfMass;          // world frame (m); the integrated position
+    std::vector<Quat> orientation;           // unit quaternion, body -> world
+    std::vector<Vec3> linearVelocity;        // m/s, of the centre of mass
+    std::vector<Vec3> angularVelocity;       // rad/s, world frame
+    std::vector<Vec3> force;                 // N, accumulated until the next step
+    std::vector<Vec3> torque;                // N m, accumulated until the next step
+    std::vector<float> mass;                 // kg; 0 for static and kinematic bodies
+    std::vector<float> inverseMass;          // 1/kg; 0 for static and kinematic bodies
+    std::vector<Mat3> inertiaLocal;          // kg m^2 about the centre of mass, body axes
+    std::vector<Mat3> inverseInertiaLocal;   // zero for static and kinematic bodies
+    std::vector<Mat3> inverseInertiaWorld;   // R I^-1 R^T, refreshed when orientation changes
+    std::vector<Vec3> localCenterOfMass;     // body origin -> centre of mass, body frame (m)
+    std::vector<MotionType> motion;
+    std::vector<Shape> shape;
+    std::vector<float> friction;
+    std::vector<float> restitution;
+    std::vector<std::uint8_t> ccd;           // 1 when the body always sweeps
+    std::vector<std::uint8_t> awake;         // 1 when simulated this step
+    std::vector<float> sleepTime;            // s the body has been below the sleep thresholds
+    std::vector<std::string> name;
+
+    std::size_t size() const { return centerOfMass.size(); }
+
+    // Appends a body; the settings must already be validated (World::createBody does it).
+    BodyId add(const BodyCreationSettings& settings, const MassProperties& massProperties);
+    void remove(BodyId id);
+
+    // Dense index of a live body, or -1 for a stale or invalid id.
+    int denseIndex(BodyId id) const;
+    BodyId idAt(std::size_t denseIndex) const;
+
+    Vec3 origin(std::size_t i) const { return centerOfMass[i] - orientation[i] * localCenterOfMass[i]; }
+    Transform transform(std::size_t i) const { return {origin(i), orientation[i]}; }
+    void refreshInverseInertiaWorld(std::size_t i);
+
+private:
+    std::vector<std::uint32_t> denseToSlot_;
+    std::vector<std::uint32_t> slotToDense_;
+    std::vector<std::uint32_t> slotGeneration_;
+    std::vector<std::uint32_t> freeSlots_;
+};
+
+}  // namespace simcore

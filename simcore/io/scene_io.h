@@ -1,0 +1,53 @@
+#pragma once
+// Scene files: the v1 format (load, save, validate) and import of the thesis app's format.
+// Every problem found is a Diagnostic naming the file, the JSON path and the reason.
+
+#include "simcore/io/scene.h"
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace simcore {
+
+struct Diagnostic {
+    enum class Severity { Warning, Error };
+    Severity severity = Severity::Error;
+    std::string file;     // as given by the caller
+    std::string path;     // JSON pointer, e.g. "/bodies/3/shape/radius"; empty for the whole file
+    int line = 0;         // 1-based, for syntax errors; 0 when unknown
+    int column = 0;       // 1-based, for syntax errors
+    std::string message;  // plain sentence: what is wrong
+
+    // "file:line:column: error: message" or "file: error at /path: message".
+    std::string toString() const;
+};
+
+struct SceneLoadResult {
+    std::optional<Scene> scene;            // set when there is no error
+    std::vector<Diagnostic> diagnostics;   // errors and warnings, in document order
+    bool ok() const { return scene.has_value(); }
+};
+
+enum class SceneFormat { V1, Thesis };
+
+// Parses scene text; the format is detected ("format": "interplay.scene" is v1, an "objects" array
+// is the thesis format). `fileName` is used in diagnostics only.
+SceneLoadResult parseScene(std::string_view text, std::string_view fileName);
+SceneLoadResult loadSceneFile(const std::filesystem::path& path);
+
+// v1 JSON text. Every number is written so that parsing it gives back the identical float.
+std::string serializeScene(const Scene& scene);
+
+// Writes atomically: to a temporary file beside the target, then renamed over it, so a failure
+// never leaves a half-written file. Returns an error message, or nothing on success.
+std::optional<std::string> saveSceneFile(const Scene& scene, const std::filesystem::path& path);
+
+// Sets one settings value from text, as the runner's `--set key.path=value` does, e.g.
+// "solver.velocityIterations=20", "gravity=[0,-1.62,0]", "effects.friction=false". The value is
+// JSON (bare words that are not JSON are taken as strings). Returns an error naming the key.
+std::optional<std::string> applySettingOverride(Scene& scene, std::string_view assignment);
+
+}  // namespace simcore

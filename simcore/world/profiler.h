@@ -1,0 +1,59 @@
+#pragma once
+// Per-stage timings and counters of the step: part of the engine's API, read by the runner's
+// report and the editor's profiler panel.
+
+#include <array>
+#include <chrono>
+#include <cstdint>
+#include <string_view>
+
+namespace simcore {
+
+// The stages of World::step, in order of execution.
+enum class Stage : std::uint8_t {
+    IntegrateVelocities,  // gravity, damping, gyroscopic torque
+    BroadPhase,
+    NarrowPhase,
+    SolveConstraints,     // contacts, friction, restitution, joints
+    IntegratePositions,
+    ContinuousCollision,
+    Sleep,
+    Count
+};
+constexpr int kStageCount = static_cast<int>(Stage::Count);
+std::string_view stageName(Stage stage);  // camelCase, as in the runner's report
+
+struct StepCounters {
+    std::uint32_t bodies = 0;
+    std::uint32_t dynamicBodies = 0;
+    std::uint32_t awakeBodies = 0;
+    std::uint32_t pairs = 0;          // broad-phase pairs
+    std::uint32_t manifolds = 0;      // touching pairs with contact points
+    std::uint32_t contactPoints = 0;
+    std::uint32_t islands = 0;
+};
+
+struct StepProfile {
+    std::array<double, kStageCount> stageMs{};  // wall time per stage (ms)
+    double totalMs = 0.0;                       // wall time of the whole step (ms)
+    StepCounters counters;
+};
+
+// Adds the elapsed wall time to a slot when it goes out of scope.
+class ScopedStageTimer {
+public:
+    explicit ScopedStageTimer(double& accumulatorMs)
+        : accumulatorMs_(accumulatorMs), start_(std::chrono::steady_clock::now()) {}
+    ~ScopedStageTimer() {
+        const auto end = std::chrono::steady_clock::now();
+        accumulatorMs_ += std::chrono::duration<double, std::milli>(end - start_).count();
+    }
+    ScopedStageTimer(const ScopedStageTimer&) = delete;
+    ScopedStageTimer& operator=(const ScopedStageTimer&) = delete;
+
+private:
+    double& accumulatorMs_;
+    std::chrono::steady_clock::time_point start_;
+};
+
+}  // namespace simcore

@@ -1,0 +1,98 @@
+#pragma once
+// The world: bodies, settings, and the step. World::step is the one place that says what a step
+// does, in order; see world.cpp.
+
+#include "simcore/dynamics/body_storage.h"
+#include "simcore/world/profiler.h"
+#include "simcore/world/world_settings.h"
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace simcore {
+
+// Which effects actually ran, counted over steps (an effect that is enabled but not needed by
+// anything in the world is skipped and not counted).
+struct EffectUsage {
+    std::array<std::uint64_t, kEffectCount> stepsRun{};
+    bool ran(Effect e) const { return stepsRun[static_cast<int>(e)] > 0; }
+};
+
+struct NonFiniteBody {
+    BodyId id;
+    std::string name;
+    std::string quantity;  // "position", "orientation", "linearVelocity", "angularVelocity"
+};
+
+class World {
+public:
+    explicit World(const WorldSettings& settings = {});
+
+    const WorldSettings& settings() const { return settings_; }
+    void setSettings(const WorldSettings& settings);  // throws std::invalid_argument naming the bad field
+
+    // Throws std::invalid_argument naming the bad field (non-finite value, non-positive size or
+    // mass, degenerate orientation, ...).
+    BodyId createBody(const BodyCreationSettings& settings);
+    void destroyBody(BodyId id);
+    bool contains(BodyId id) const { return bodies_.denseIndex(id) >= 0; }
+    std::size_t bodyCount() const { return bodies_.size(); }
+    std::vector<BodyId> bodyIds() const;  // in dense (creation, modulo removals) order
+
+    // Advances the world by settings().timeStep.
+    void step();
+
+    // Body state (origin and orientation as authored; velocities of the centre of mass).
+    Vec3 position(BodyId id) const;
+    Quat orientation(BodyId id) const;
+    Vec3 centerOfMass(BodyId id) const;
+    Vec3 linearVelocity(BodyId id) const;
+    Vec3 angularVelocity(BodyId id) const;
+    bool isAwake(BodyId id) const;
+    const std::string& name(BodyId id) const;
+    const Shape& shape(BodyId id) const;
+    MotionType motionType(BodyId id) const;
+    float mass(BodyId id) const;
+
+    // Edits wake the body.
+    void setTransform(BodyId id, const Vec3& position, const Quat& orientation);
+    void setLinearVelocity(BodyId id, const Vec3& velocity);
+    void setAngularVelocity(BodyId id, const Vec3& velocity);
+    void addForce(BodyId id, const Vec3& force);                      // at the centre of mass, until next step (N)
+    void addTorque(BodyId id, const Vec3& torque);                    // until next step (N m)
+    void addImpulse(BodyId id, const Vec3& impulse, const Vec3& worldPoint);  // N s, applied now
+    void wake(BodyId id);
+
+    // Energies of dynamic bodies (J); potential is relative to the origin along gravity.
+    double kineticEnergy() const;
+    double potentialEnergy() const;
+    Vec3 linearMomentum() const;
+    Vec3 angularMomentum() const;  // about the world origin
+
+    std::optional<NonFiniteBody> findNonFiniteBody() const;
+
+    const StepProfile& lastStepProfile() const { return lastProfile_; }
+    const EffectUsage& effectUsage() const { return effectUsage_; }
+    std::uint64_t stepCount() const { return stepCount_; }
+    double simulatedTime() const { return simulatedTime_; }
+
+    // Direct read access to the arrays, for renderers and reports that visit every body.
+    const BodyStorage& bodies() const { return bodies_; }
+
+private:
+    bool needs(Effect effect) const;
+    void updateSleep(float dt);
+    void countEffect(Effect effect) { ++effectUsage_.stepsRun[static_cast<int>(effect)]; }
+    int checkedIndex(BodyId id) const;  // dense index, or throws std::out_of_range for a stale id
+
+    WorldSettings settings_;
+    BodyStorage bodies_;
+    StepProfile lastProfile_;
+    EffectUsage effectUsage_;
+    std::uint64_t stepCount_ = 0;
+    double simulatedTime_ = 0.0;
+};
+
+}  // namespace simcore

@@ -1,0 +1,70 @@
+#pragma once
+// Everything that parametrises a world, as one plain struct with defaulted, unit-annotated members.
+// A scene file's "settings" object maps onto it key for key.
+
+#include "simcore/math/math.h"
+
+#include <array>
+#include <cstdint>
+#include <string_view>
+
+namespace simcore {
+
+// Physical effects a step can include. An effect runs only when enabled here *and* something in
+// the world needs it (see World::step), so switching one off is also a way to buy speed.
+enum class Effect : std::uint8_t {
+    Gravity,
+    Damping,
+    Gyroscopic,
+    Contacts,
+    Friction,
+    Restitution,
+    Joints,
+    Ccd,
+    Sleeping,
+    Count
+};
+constexpr int kEffectCount = static_cast<int>(Effect::Count);
+std::string_view effectName(Effect effect);  // "gravity", "damping", ... as in the scene file
+
+struct EffectFlags {
+    std::array<bool, kEffectCount> enabled{true, true, true, true, true, true, true, true, true};
+
+    bool operator[](Effect e) const { return enabled[static_cast<int>(e)]; }
+    bool& operator[](Effect e) { return enabled[static_cast<int>(e)]; }
+    friend bool operator==(const EffectFlags&, const EffectFlags&) = default;
+};
+
+struct SolverSettings {
+    int velocityIterations = 8;  // sequential-impulse passes per substep
+    int positionIterations = 3;  // position-correction passes per substep
+    friend bool operator==(const SolverSettings&, const SolverSettings&) = default;
+};
+
+struct DampingSettings {
+    // Exponential velocity decay rates (1/s): v(t + dt) = v(t) * exp(-rate * dt).
+    float linear = 0.0f;
+    float angular = 0.0f;
+    friend bool operator==(const DampingSettings&, const DampingSettings&) = default;
+};
+
+struct SleepSettings {
+    bool enabled = true;
+    float linearVelocity = 0.05f;   // below this speed (m/s) a body may sleep
+    float angularVelocity = 0.05f;  // below this angular speed (rad/s) a body may sleep
+    float timeToSleep = 0.5f;       // a body must stay slow this long (s) before it sleeps
+    friend bool operator==(const SleepSettings&, const SleepSettings&) = default;
+};
+
+struct WorldSettings {
+    Vec3 gravity{0.0f, -9.81f, 0.0f};  // m/s^2
+    float timeStep = 1.0f / 60.0f;     // s, one call to World::step
+    int substeps = 1;                  // the step is split into this many equal substeps
+    SolverSettings solver;
+    DampingSettings damping;
+    SleepSettings sleep;
+    EffectFlags effects;
+    friend bool operator==(const WorldSettings&, const WorldSettings&) = default;
+};
+
+}  // namespace simcore
