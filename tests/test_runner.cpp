@@ -1,4 +1,195 @@
+// interplay-run end to end: arguments, exit codes, and the report contract from the brief.
+
 #include <QtTest>
-class Placeholder : public QObject { Q_OBJECT };
-QTEST_APPLESS_MAIN(Placeholder)
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+
+namespace {
+
+struct RunResult {
+    int exitCode = -1;
+    QString out;
+    QString err;
+};
+
+RunResult runRunner(const QStringList& arguments) {
+    QProcess process;
+    process.start(INTERPLAY_RUN_PATH, arguments);
+    if (!process.waitForFinished(60'000)) return {};
+    return {process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1,
+            QString::fromUtf8(process.readAllStandardOutput()),
+            QString::fromUtf8(process.readAllStandardError())};
+}
+
+// A sphere thrown from (0, 10, 0) at (2, 3, 0) m/s, alone in the world.
+const char* kProjectileScene = R"({
+  "format": "interplay.scene", "version": 1,
+  "settings": { "gravity": [0, -9.81, 0], "timeStep": 0.01, "sleep": { "enabled": false } },
+  "bodies": [ { "name": "ball", "shape": { "type": "sphere", "radius": 0.25 },
+                "position": [0, 10, 0], "mass": 1.5, "linearVelocity": [2, 3, 0] } ],
+  "joints": []
+})";
+
+}  // namespace
+
+class TestRunner : public QObject {
+    Q_OBJECT
+
+private slots:
+    void init();
+    void badArgumentsExitTwo_data();
+    void badArgumentsExitTwo();
+    void missingSceneExitsThreeNamingTheFile();
+    void reportHasTheContractFieldsAndTheRightPhysics();
+    void optionsChangeTheSettings();
+    void unknownSettingIsNamed();
+    void secondsBecomeSteps();
+    void traceAndOutFilesAreWritten();
+    void saveWithZeroStepsConvertsTheScene();
+
+private:
+    QString writeScene(const QByteArray& text, const QString& name = "scene.json");
+    QTemporaryDir dir_;
+};
+
+void TestRunner::init() { QVERIFY(dir_.isValid()); }
+
+QString TestRunner::writeScene(const QByteArray& text, const QString& name) {
+    const QString path = dir_.filePath(name);
+    QFile file(path);
+    if (!file.open(QIODevice::WriteOnly)) return {};
+    file.write(text);
+    return path;
+}
+
+void TestRunner::badArgumentsExitTwo_data() {
+    QTest::addColumn<QStringList>("arguments");
+    QTest::addColumn<QString>("message");
+    QTest::newRow("no scene") << QStringList{"--steps", "3"} << "no scene file given";
+    QTest::newRow("unknown option") << QStringList{"SCENE", "--bogus", "1"} << "unknown option --bogus";
+    QTest::newRow("steps not a number") << QStringList{"SCENE", "--steps", "ten"} << "--steps";
+    QTest::newRow("negative dt") << QStringList{"SCENE", "--dt", "-0.01"} << "--dt";
+    QTest::newRow("zero substeps") << QStringList{"SCENE", "--substeps", "0"} << "--substeps";
+    QTest::newRow("steps and seconds") << QStringList{"SCENE", "--steps", "1", "--seconds", "1"} << "exclude";
+    QTest::newRow("missing value") << QStringList{"SCENE", "--steps"} << "needs a value";
+    QTest::newRow("set without =") << QStringList{"SCENE", "--set", "gravity"} << "key.path=value";
+    QTest::newRow("two scenes") << QStringList{"SCENE", "other.json"} << "more than one scene";
+}
+
+void TestRunner::badArgumentsExitTwo() {
+    QFETCH(QStringList, arguments);
+    QFETCH(QString, message);
+    const QString scene = writeScene(kProjectileScene);
+    arguments.replaceInStrings("SCENE", scene);
+    const RunResult r = runRunner(arguments);
+    QCOMPARE(r.exitCode, 2);
+    QVERIFY2(r.err.contains(message), qPrintable(r.err));
+    QVERIFY(r.out.isEmpty());
+}
+
+void TestRunner::missingSceneExitsThreeNamingTheFile() {
+    const QString path = dir_.filePath("does-not-exist.json");
+    const RunResult r = runRunner({path});
+    QCOMPARE(r.exitCode, 3);
+    QVERIFY2(r.err.contains(path), qPrintable(r.err));
+}
+
+void TestRunner::reportHasTheContractFieldsAndTheRightPhysics() {
+    const RunResult r = runRunner({writeScene(kProjectileScene), "--steps", "100"});
+    QCOMPARE(r.exitCode, 0);
+    const auto report = nlohmann::json::parse(r.out.toStdString());
+
+    for (const char* key : {"steps", "dt", "wallMs", "msPerStep", "stages", "effects", "counters", "metrics", "bodies"})
+        QVERIFY2(report.contains(key), key);
+    QCOMPARE(report["steps"].get<int>(), 100);
+    QCOMPARE(report["dt"].get<float>(), 0.01f);
+    QVERIFY(report["msPerStep"].get<double>() >= 0.0);
+    QVERIFY(report["wallMs"].get<double>() >= report["stages"]["integratePositions"].get<double>());
+    for (const char* stage : {"integrateVelocities", "broadPhase", "narrowPhase", "solveConstraints",
+                              "integratePositions", "continuousCollision", "sleep"})
+        QVERIFY2(report["stages"].contains(stage), stage);
+    for (const char* effect : {"gravity", "damping", "gyroscopic", "contacts", "friction", "restitution",
+                               "joints", "ccd", "sleeping"})
+        QVERIFY2(report["effects"].contains(effect), effect);
+    QCOMPARE(report["effects"]["gravity"].get<bool>(), true);
+    QCOMPARE(report["effects"]["damping"].get<bool>(), false);   // damping rates are zero
+    QCOMPARE(report["effects"]["sleeping"].get<bool>(), false);  // switched off in the scene
+    QCOMPARE(report["counters"]["bodies"].get<int>(), 1);
+    for (const char* metric : {"maxPenetration", "kineticEnergy", "potentialEnergy", "totalEnergy"})
+        QVERIFY2(report["metrics"].contains(metric), metric);
+
+    const auto& ball = report["bodies"][0];
+    QCOMPARE(ball["name"].get<std::string>(), std::string("ball"));
+    for (const char* key : {"position", "orientation", "linearVelocity", "angularVelocity", "awake"})
+        QVERIFY2(ball.contains(key), key);
+    // Semi-implicit Euler's exact discrete answer: y = y0 + v0 t - 1/2 g t^2 - 1/2 g h t.
+    const double t = 1.0, h = 0.01, g = 9.81;
+    const double y = 10.0 + 3.0 * t - 0.5 * g * t * t - 0.5 * g * h * t;
+    QVERIFY(std::abs(ball["position"][0].get<double>() - 2.0) < 1e-4);
+    QVERIFY(std::abs(ball["position"][1].get<double>() - y) < 1e-4);
+    QVERIFY(std::abs(ball["linearVelocity"][1].get<double>() - (3.0 - g * t)) < 1e-4);
+    // Energy: kinetic + potential with potential -m g.x; semi-implicit Euler's drift is O(h).
+    const double e0 = 0.5 * 1.5 * 13.0 + 1.5 * g * 10.0;
+    QVERIFY(std::abs(report["metrics"]["totalEnergy"].get<double>() - e0) < 1.5 * g * 0.5 * g * h * t + 1e-3);
+}
+
+void TestRunner::optionsChangeTheSettings() {
+    const RunResult r = runRunner({writeScene(kProjectileScene), "--steps", "10", "--dt", "0.005", "--substeps", "3",
+                                   "--iterations", "12", "--set", "gravity=[0,0,0]", "--set", "damping.linear=1"});
+    QCOMPARE(r.exitCode, 0);
+    const auto report = nlohmann::json::parse(r.out.toStdString());
+    QCOMPARE(report["dt"].get<float>(), 0.005f);
+    QCOMPARE(report["substeps"].get<int>(), 3);
+    QCOMPARE(report["effects"]["gravity"].get<bool>(), false);  // zero gravity: nothing to do
+    QCOMPARE(report["effects"]["damping"].get<bool>(), true);
+    // v = 3 exp(-1 * 0.05) along y with no gravity.
+    QVERIFY(std::abs(report["bodies"][0]["linearVelocity"][1].get<double>() - 3.0 * std::exp(-0.05)) < 1e-5);
+}
+
+void TestRunner::unknownSettingIsNamed() {
+    const RunResult r = runRunner({writeScene(kProjectileScene), "--set", "solver.bogus=3"});
+    QCOMPARE(r.exitCode, 2);
+    QVERIFY2(r.err.contains("solver.bogus"), qPrintable(r.err));
+}
+
+void TestRunner::secondsBecomeSteps() {
+    const RunResult r = runRunner({writeScene(kProjectileScene), "--seconds", "2"});
+    QCOMPARE(r.exitCode, 0);
+    QCOMPARE(nlohmann::json::parse(r.out.toStdString())["steps"].get<int>(), 200);
+}
+
+void TestRunner::traceAndOutFilesAreWritten() {
+    const QString trace = dir_.filePath("trace.csv");
+    const QString out = dir_.filePath("report.json");
+    const RunResult r = runRunner({writeScene(kProjectileScene), "--steps", "5", "--trace", trace, "--out", out});
+    QCOMPARE(r.exitCode, 0);
+    QFile traceFile(trace);
+    QVERIFY(traceFile.open(QIODevice::ReadOnly));
+    const QStringList lines = QString::fromUtf8(traceFile.readAll()).split('\n', Qt::SkipEmptyParts);
+    QCOMPARE(lines.size(), 1 + 6);  // header, then steps 0..5 for one body
+    QVERIFY(lines[0].startsWith("step,time,body,x,y,z"));
+    QVERIFY(lines[1].startsWith("0,0,0,0,10,0"));
+    QFile outFile(out);
+    QVERIFY(outFile.open(QIODevice::ReadOnly));
+    QCOMPARE(QString::fromUtf8(outFile.readAll()).trimmed(), r.out.trimmed());
+}
+
+void TestRunner::saveWithZeroStepsConvertsTheScene() {
+    const QString saved = dir_.filePath("saved.json");
+    const RunResult r = runRunner({writeScene(kProjectileScene), "--steps", "0", "--save", saved, "--set",
+                                   "solver.velocityIterations=17"});
+    QCOMPARE(r.exitCode, 0);
+    const RunResult again = runRunner({saved, "--steps", "0"});
+    QCOMPARE(again.exitCode, 0);
+    QFile file(saved);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const auto scene = nlohmann::json::parse(file.readAll().toStdString());
+    QCOMPARE(scene["format"].get<std::string>(), std::string("interplay.scene"));
+    QCOMPARE(scene["settings"]["solver"]["velocityIterations"].get<int>(), 17);
+    QCOMPARE(scene["bodies"][0]["name"].get<std::string>(), std::string("ball"));
+}
+
+QTEST_GUILESS_MAIN(TestRunner)
 #include "test_runner.moc"

@@ -1,1 +1,67 @@
-// placeholder
+#include "report.h"
+
+namespace runner {
+
+namespace {
+
+nlohmann::ordered_json toJson(const simcore::Vec3& v) { return {v.x, v.y, v.z}; }
+nlohmann::ordered_json toJson(const simcore::Quat& q) { return {q.w, q.x, q.y, q.z}; }
+
+}  // namespace
+
+nlohmann::ordered_json makeReport(const simcore::World& world, const RunSummary& summary) {
+    using namespace simcore;
+    const double perStep = summary.steps > 0 ? 1.0 / static_cast<double>(summary.steps) : 0.0;
+
+    nlohmann::ordered_json report;
+    report["steps"] = summary.steps;
+    report["dt"] = world.settings().timeStep;
+    report["substeps"] = world.settings().substeps;
+    report["simulatedTime"] = world.simulatedTime();
+    report["wallMs"] = summary.wallMs;
+    report["msPerStep"] = summary.wallMs * perStep;
+
+    nlohmann::ordered_json stages = nlohmann::ordered_json::object();  // mean ms per step of each stage
+    for (int s = 0; s < kStageCount; ++s)
+        stages[std::string(stageName(static_cast<Stage>(s)))] = summary.stageMs[s] * perStep;
+    report["stages"] = stages;
+
+    nlohmann::ordered_json effects = nlohmann::ordered_json::object();  // did the stage run in any step?
+    for (int e = 0; e < kEffectCount; ++e)
+        effects[std::string(effectName(static_cast<Effect>(e)))] = world.effectUsage().ran(static_cast<Effect>(e));
+    report["effects"] = effects;
+
+    const StepCounters& c = world.lastStepProfile().counters;  // of the last step
+    report["counters"] = {{"bodies", c.bodies},          {"dynamicBodies", c.dynamicBodies},
+                          {"awakeBodies", c.awakeBodies}, {"pairs", c.pairs},
+                          {"manifolds", c.manifolds},     {"contactPoints", c.contactPoints},
+                          {"islands", c.islands}};
+
+    const double kinetic = world.kineticEnergy();
+    const double potential = world.potentialEnergy();
+    report["metrics"] = {
+        // No contact stage exists yet, so nothing can penetrate; the contact solver reports it.
+        {"maxPenetration", 0.0},
+        {"kineticEnergy", kinetic},
+        {"potentialEnergy", potential},
+        {"totalEnergy", kinetic + potential},
+        {"energyChange", kinetic + potential - summary.initialEnergy},
+        {"linearMomentum", toJson(world.linearMomentum())},
+        {"angularMomentum", toJson(world.angularMomentum())},
+    };
+
+    nlohmann::ordered_json bodies = nlohmann::ordered_json::array();
+    const BodyStorage& b = world.bodies();
+    for (std::size_t i = 0; i < b.size(); ++i) {
+        bodies.push_back({{"name", b.name[i]},
+                          {"position", toJson(b.origin(i))},
+                          {"orientation", toJson(b.orientation[i])},
+                          {"linearVelocity", toJson(b.linearVelocity[i])},
+                          {"angularVelocity", toJson(b.angularVelocity[i])},
+                          {"awake", b.awake[i] != 0}});
+    }
+    report["bodies"] = bodies;
+    return report;
+}
+
+}  // namespace runner

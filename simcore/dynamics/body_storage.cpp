@@ -1,1 +1,97 @@
-// placeholder until implemented in this session
+#include "simcore/dynamics/body_storage.h"
+
+#include <cassert>
+#include <utility>
+
+namespace simcore {
+
+namespace {
+
+// Moves the last element into slot `i` and drops the last, for each array.
+template <typename... Arrays>
+void swapRemove(std::size_t i, Arrays&... arrays) {
+    auto removeFrom = [i](auto& array) {
+        if (i + 1 != array.size()) array[i] = std::move(array.back());
+        array.pop_back();
+    };
+    (removeFrom(arrays), ...);
+}
+
+}  // namespace
+
+BodyId BodyStorage::add(const BodyCreationSettings& settings, const MassProperties& massProperties) {
+    const bool isDynamic = settings.motion == MotionType::Dynamic;
+    const Quat q = glm::normalize(settings.orientation);
+
+    const std::size_t dense = size();
+    centerOfMass.push_back(settings.position + q * massProperties.centerOfMass);
+    orientation.push_back(q);
+    linearVelocity.push_back(settings.motion == MotionType::Static ? Vec3(0.0f) : settings.linearVelocity);
+    angularVelocity.push_back(settings.motion == MotionType::Static ? Vec3(0.0f) : settings.angularVelocity);
+    force.emplace_back(0.0f);
+    torque.emplace_back(0.0f);
+    mass.push_back(isDynamic ? massProperties.mass : 0.0f);
+    inverseMass.push_back(isDynamic ? 1.0f / massProperties.mass : 0.0f);
+    inertiaLocal.push_back(isDynamic ? massProperties.inertia : Mat3(0.0f));
+    inverseInertiaLocal.push_back(isDynamic ? glm::inverse(massProperties.inertia) : Mat3(0.0f));
+    inverseInertiaWorld.emplace_back(0.0f);
+    localCenterOfMass.push_back(massProperties.centerOfMass);
+    motion.push_back(settings.motion);
+    shape.push_back(settings.shape);
+    friction.push_back(settings.friction);
+    restitution.push_back(settings.restitution);
+    ccd.push_back(settings.ccd ? 1 : 0);
+    awake.push_back(settings.motion == MotionType::Static ? 0 : 1);
+    sleepTime.push_back(0.0f);
+    name.push_back(settings.name);
+    refreshInverseInertiaWorld(dense);
+
+    std::uint32_t slot;
+    if (!freeSlots_.empty()) {
+        slot = freeSlots_.back();
+        freeSlots_.pop_back();
+    } else {
+        slot = static_cast<std::uint32_t>(slotToDense_.size());
+        slotToDense_.push_back(0);
+        slotGeneration_.push_back(0);
+    }
+    slotToDense_[slot] = static_cast<std::uint32_t>(dense);
+    denseToSlot_.push_back(slot);
+    return {slot, slotGeneration_[slot]};
+}
+
+void BodyStorage::remove(BodyId id) {
+    const int dense = denseIndex(id);
+    assert(dense >= 0);
+    if (dense < 0) return;
+    const auto i = static_cast<std::size_t>(dense);
+
+    const std::uint32_t movedSlot = denseToSlot_.back();
+    swapRemove(i, centerOfMass, orientation, linearVelocity, angularVelocity, force, torque, mass,
+               inverseMass, inertiaLocal, inverseInertiaLocal, inverseInertiaWorld,
+               localCenterOfMass, motion, shape, friction, restitution, ccd, awake, sleepTime,
+               name, denseToSlot_);
+    slotToDense_[movedSlot] = static_cast<std::uint32_t>(i);
+
+    ++slotGeneration_[id.index];  // stale handles to this slot now fail denseIndex()
+    freeSlots_.push_back(id.index);
+}
+
+int BodyStorage::denseIndex(BodyId id) const {
+    if (id.index >= slotToDense_.size() || slotGeneration_[id.index] != id.generation) return -1;
+    const std::uint32_t dense = slotToDense_[id.index];
+    if (dense >= denseToSlot_.size() || denseToSlot_[dense] != id.index) return -1;
+    return static_cast<int>(dense);
+}
+
+BodyId BodyStorage::idAt(std::size_t dense) const {
+    const std::uint32_t slot = denseToSlot_[dense];
+    return {slot, slotGeneration_[slot]};
+}
+
+void BodyStorage::refreshInverseInertiaWorld(std::size_t i) {
+    const Mat3 r = glm::mat3_cast(orientation[i]);
+    inverseInertiaWorld[i] = r * inverseInertiaLocal[i] * glm::transpose(r);
+}
+
+}  // namespace simcore

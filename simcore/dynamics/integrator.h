@@ -10,7 +10,7 @@ struct VelocityIntegration {
     Vec3 gravity{0.0f};              // m/s^2; zero when the gravity effect does not run
     float linearRetention = 1.0f;    // velocity factor over this substep, exp(-rate * dt)
     float angularRetention = 1.0f;
-    bool gyroscopic = false;         // include the -w x (I w) torque
+    bool gyroscopic = false;         // include the gyroscopic torque -w x (I w), implicitly
 };
 
 void integrateVelocities(BodyStorage& bodies, const VelocityIntegration& params, float dt);

@@ -1,1 +1,595 @@
-// placeholder until implemented in this session
+// Scene files, format v1: strict loading with a diagnostic per problem, exact saving, atomic writes.
+//
+// Validation rules (each violation is an error at the value's JSON pointer; all are collected, up
+// to io_detail::kMaxDiagnostics):
+//  - required: "format" ("interplay.scene"), "version" (1; newer versions are refused), "bodies",
+//    each body's "shape", its "type" and the dimensions that type needs.
+//  - sizes (halfExtents, radius, halfHeight) in [1e-4, 1e5] m; positions and hull points within
+//    +-1e6 m; mass in [1e-6, 1e9] kg; density in [1e-3, 1e6] kg/m^3 (mass and density are
+//    exclusive); friction in [0, 100]; restitution in [0, 1]; velocities within +-1e4 m/s and
+//    rad/s; colour components in [0, 1]. Outside these ranges float precision, or the solver,
+//    would give garbage, so a clear refusal is kinder than a strange simulation.
+//  - orientation [w, x, y, z]: finite and not (near) zero length; a quaternion more than 1e-3
+//    from unit length is normalised with a warning (smaller deviations silently).
+//  - settings: gravity components within +-1e4 m/s^2; timeStep in [1e-6, 1] s; substeps 1..64;
+//    solver.velocityIterations 1..1000; solver.positionIterations 0..1000 (0 switches position
+//    correction off); damping rates in [0, 1000] 1/s; sleep speeds in [0, 1000]; timeToSleep in
+//    [0, 1e6] s. Every settings key is optional (defaults from WorldSettings).
+//  - convex hulls: 4..4096 points, and ConvexHull::build must succeed.
+//  - unknown keys are warnings: the scene loads, the key is reported and dropped.
+//  - static and kinematic bodies may carry mass or density: the value is validated and kept (so
+//    switching such a body to dynamic in the editor, or saving it, does not lose it), but the
+//    world ignores it. No warning, since nothing is lost.
+//  - a body without a name is called "body <index>".
+//  - "joints" must be an array; joints are not part of the engine yet, so a non-empty array is an
+//    error rather than a scene that silently behaves differently from what the file says.
+
+#include "simcore/io/scene_io.h"
+
+#include "simcore/io/json_reader.h"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <random>
+#include <system_error>
+
+namespace simcore {
+
+using io_detail::childPath;
+using io_detail::Json;
+using io_detail::Reader;
+namespace limits = io_detail::limits;
+
+namespace {
+
+constexpr const char* kFormatTag = "interplay.scene";
+constexpr int kFormatVersion = 1;
+constexpr std::uintmax_t kMaxFileBytes = 64u * 1024u * 1024u;  // far beyond any real scene
+
+// ---- reading ----
+
+void readSettings(Reader& r, const Json& s, const std::string& path, WorldSettings& out) {
+    if (!r.expectObject(s, path)) return;
+    r.checkKeys(s, path, {"gravity", "timeStep", "substeps", "solver", "damping", "sleep", "effects"});
+    r.optionalVec3(s, path, "gravity", limits::kGravity, out.gravity);
+    r.optionalFloat(s, path, "timeStep", limits::kTimeStep, out.timeStep);
+    r.optionalInt(s, path, "substeps", limits::kMinSubsteps, limits::kMaxSubsteps, out.substeps);
+
+    if (const Json* solver = Reader::find(s, "solver")) {
+        const std::string p = childPath(path, "solver");
+        if (r.expectObject(*solver, p)) {
+            r.checkKeys(*solver, p, {"velocityIterations", "positionIterations"});
+            r.optionalInt(*solver, p, "velocityIterations", limits::kMinVelocityIterations,
+                          limits::kMaxVelocityIterations, out.solver.velocityIterations);
+            r.optionalInt(*solver, p, "positionIterations", limits::kMinPositionIterations,
+                          limits::kMaxPositionIterations, out.solver.positionIterations);
+        }
+    }
+    if (const Json* damping = Reader::find(s, "damping")) {
+        const std::string p = childPath(path, "damping");
+        if (r.expectObject(*damping, p)) {
+            r.checkKeys(*damping, p, {"linear", "angular"});
+            r.optionalFloat(*damping, p, "linear", limits::kDampingRate, out.damping.linear);
+            r.optionalFloat(*damping, p, "angular", limits::kDampingRate, out.damping.angular);
+        }
+    }
+    if (const Json* sleep = Reader::find(s, "sleep")) {
+        const std::string p = childPath(path, "sleep");
+        if (r.expectObject(*sleep, p)) {
+            r.checkKeys(*sleep, p, {"enabled", "linearVelocity", "angularVelocity", "timeToSleep"});
+            r.optionalBool(*sleep, p, "enabled", out.sleep.enabled);
+            r.optionalFloat(*sleep, p, "linearVelocity", limits::kSleepSpeed, out.sleep.linearVelocity);
+            r.optionalFloat(*sleep, p, "angularVelocity", limits::kSleepSpeed, out.sleep.angularVelocity);
+            r.optionalFloat(*sleep, p, "timeToSleep", limits::kTimeToSleep, out.sleep.timeToSleep);
+        }
+    }
+    if (const Json* effects = Reader::find(s, "effects")) {
+        const std::string p = childPath(path, "effects");
+        if (r.expectObject(*effects, p)) {
+            std::vector<std::string_view> names;
+            for (int i = 0; i < kEffectCount; ++i) {
+                const Effect e = static_cast<Effect>(i);
+                names.push_back(effectName(e));
+                bool enabled = out.effects[e];
+                r.optionalBool(*effects, p, effectName(e), enabled);
+                out.effects[e] = enabled;
+            }
+            r.checkKeys(*effects, p, names);
+        }
+    }
+}
+
+std::optional<Shape> readShape(Reader& r, const Json& j, const std::string& path) {
+    if (!r.expectObject(j, path)) return std::nullopt;
+    const Json* typeValue = r.require(j, path, "type");
+    if (!typeValue) return std::nullopt;
+    const auto type = r.readString(*typeValue, childPath(path, "type"));
+    if (!type) return std::nullopt;
+
+    auto size = [&](std::string_view key) -> std::optional<float> {
+        const Json* v = r.require(j, path, key);
+        return v ? r.readFloat(*v, childPath(path, key), limits::kSize) : std::nullopt;
+    };
+
+    if (*type == "box") {
+        r.checkKeys(j, path, {"type", "halfExtents"}, "for a box shape");
+        const Json* v = r.require(j, path, "halfExtents");
+        const auto halfExtents = v ? r.readVec3(*v, childPath(path, "halfExtents"), limits::kSize) : std::nullopt;
+        if (halfExtents) return Shape::box(*halfExtents);
+    } else if (*type == "sphere") {
+        r.checkKeys(j, path, {"type", "radius"}, "for a sphere shape");
+        if (const auto radius = size("radius")) return Shape::sphere(*radius);
+    } else if (*type == "capsule" || *type == "cylinder") {
+        r.checkKeys(j, path, {"type", "radius", "halfHeight"}, *type == "capsule" ? "for a capsule shape" : "for a cylinder shape");
+        const auto radius = size("radius");
+        const auto halfHeight = size("halfHeight");
+        if (radius && halfHeight)
+            return *type == "capsule" ? Shape::capsule(*radius, *halfHeight) : Shape::cylinder(*radius, *halfHeight);
+    } else if (*type == "convexHull") {
+        r.checkKeys(j, path, {"type", "points"}, "for a convexHull shape");
+        const Json* points = r.require(j, path, "points");
+        const std::string p = childPath(path, "points");
+        if (!points || !r.expectArray(*points, p)) return std::nullopt;
+        if (points->size() > limits::kMaxHullPoints) {
+            r.error(p, "a convex hull may have at most " + std::to_string(limits::kMaxHullPoints) + " points, got " +
+                           std::to_string(points->size()));
+            return std::nullopt;
+        }
+        std::vector<Vec3> cloud;
+        bool ok = true;
+        for (std::size_t i = 0; i < points->size() && !r.full(); ++i) {
+            if (const auto point = r.readVec3((*points)[i], childPath(p, i), limits::kCoordinate))
+                cloud.push_back(*point);
+            else
+                ok = false;
+        }
+        if (ok) return io_detail::hullShape(r, cloud, p);
+    } else {
+        r.error(childPath(path, "type"),
+                "unknown shape type '" + *type + "' (expected box, sphere, capsule, cylinder or convexHull)");
+    }
+    return std::nullopt;
+}
+
+std::optional<Quat> readOrientation(Reader& r, const Json& v, const std::string& path) {
+    if (!v.is_array()) {
+        r.error(path, "expected an array of 4 numbers [w, x, y, z], got " + io_detail::typeName(v));
+        return std::nullopt;
+    }
+    if (v.size() != 4) {
+        r.error(path, "expected 4 numbers [w, x, y, z], got " + std::to_string(v.size()));
+        return std::nullopt;
+    }
+    float c[4] = {};
+    for (std::size_t i = 0; i < 4; ++i) {
+        const auto f = r.readFloat(v[i], childPath(path, i), limits::kQuaternionComponent);
+        if (!f) return std::nullopt;
+        c[i] = *f;
+    }
+    return io_detail::normalisedOrientation(r, Quat(c[0], c[1], c[2], c[3]), path);
+}
+
+std::optional<SceneBody> readBody(Reader& r, const Json& b, const std::string& path, std::size_t index) {
+    if (!r.expectObject(b, path)) return std::nullopt;
+    r.checkKeys(b, path,
+                {"name", "motion", "shape", "position", "orientation", "linearVelocity", "angularVelocity", "mass",
+                 "density", "friction", "restitution", "ccd", "color"});
+    const int errorsBefore = r.errorCount();
+    SceneBody out;
+    BodyCreationSettings& s = out.body;
+
+    s.name = "body " + std::to_string(index);
+    if (const Json* name = Reader::find(b, "name"))
+        if (auto text = r.readString(*name, childPath(path, "name"))) s.name = std::move(*text);
+
+    if (const Json* motion = Reader::find(b, "motion")) {
+        const std::string p = childPath(path, "motion");
+        if (const auto text = r.readString(*motion, p)) {
+            if (*text == "static") s.motion = MotionType::Static;
+            else if (*text == "dynamic") s.motion = MotionType::Dynamic;
+            else if (*text == "kinematic") s.motion = MotionType::Kinematic;
+            else r.error(p, "unknown motion '" + *text + "' (expected static, dynamic or kinematic)");
+        }
+    }
+
+    if (const Json* shape = r.require(b, path, "shape"))
+        if (auto parsed = readShape(r, *shape, childPath(path, "shape"))) s.shape = std::move(*parsed);
+
+    r.optionalVec3(b, path, "position", limits::kCoordinate, s.position);
+    if (const Json* orientation = Reader::find(b, "orientation"))
+        if (const auto q = readOrientation(r, *orientation, childPath(path, "orientation"))) s.orientation = *q;
+    r.optionalVec3(b, path, "linearVelocity", limits::kLinearSpeed, s.linearVelocity);
+    r.optionalVec3(b, path, "angularVelocity", limits::kAngularSpeed, s.angularVelocity);
+
+    const Json* mass = Reader::find(b, "mass");
+    const Json* density = Reader::find(b, "density");
+    if (mass && density) {
+        r.error(childPath(path, "density"), "give either mass or density, not both");
+    } else if (mass) {
+        if (const auto m = r.readFloat(*mass, childPath(path, "mass"), limits::kMass)) s.mass = *m;
+    } else if (density) {
+        if (const auto d = r.readFloat(*density, childPath(path, "density"), limits::kDensity)) s.density = *d;
+    }
+
+    r.optionalFloat(b, path, "friction", limits::kFriction, s.friction);
+    r.optionalFloat(b, path, "restitution", limits::kRestitution, s.restitution);
+    r.optionalBool(b, path, "ccd", s.ccd);
+    if (const Json* color = Reader::find(b, "color"))
+        if (const auto c = r.readVec3(*color, childPath(path, "color"), limits::kColor)) out.color = *c;
+
+    if (r.errorCount() > errorsBefore) return std::nullopt;
+    return out;
+}
+
+std::optional<Scene> readV1(const Json& root, Reader& r) {
+    r.checkKeys(root, "", {"format", "version", "settings", "bodies", "joints"});
+
+    // A wrong or missing format tag means this is not a scene at all, and a newer version may give
+    // keys other meanings: reporting its contents key by key would only bury the real problem.
+    const Json* format = r.require(root, "", "format");
+    if (!format) return std::nullopt;
+    const auto tag = r.readString(*format, "/format");
+    if (!tag) return std::nullopt;
+    if (*tag != kFormatTag) {
+        r.error("/format", "format must be \"" + std::string(kFormatTag) + "\", got \"" + *tag + "\"");
+        return std::nullopt;
+    }
+    if (const Json* version = r.require(root, "", "version")) {
+        if (!version->is_number()) {
+            r.error("/version", "expected an integer, got " + io_detail::typeName(*version));
+        } else if (const double v = version->get<double>(); v != std::floor(v)) {
+            r.error("/version", "expected an integer, got " + io_detail::formatNumber(v));
+        } else {
+            if (v > kFormatVersion) {
+                r.error("/version", "version " + io_detail::formatNumber(v) + " is newer than this program supports (" +
+                                        std::to_string(kFormatVersion) + ")");
+                return std::nullopt;
+            }
+            if (v != kFormatVersion)
+                r.error("/version", "version " + io_detail::formatNumber(v) + " is not a valid version (this program reads version " +
+                                        std::to_string(kFormatVersion) + ")");
+        }
+    }
+
+    Scene scene;
+    if (const Json* settings = Reader::find(root, "settings")) readSettings(r, *settings, "/settings", scene.settings);
+
+    if (const Json* bodies = r.require(root, "", "bodies"); bodies && r.expectArray(*bodies, "/bodies")) {
+        scene.bodies.reserve(bodies->size());
+        for (std::size_t i = 0; i < bodies->size() && !r.full(); ++i) {
+            if (auto body = readBody(r, (*bodies)[i], childPath("/bodies", i), i)) scene.bodies.push_back(std::move(*body));
+        }
+    }
+
+    if (const Json* joints = Reader::find(root, "joints"); joints && r.expectArray(*joints, "/joints")) {
+        if (!joints->empty()) r.error("/joints/0", "joints are not supported by this version yet");
+    }
+
+    if (r.errorCount() > 0) return std::nullopt;
+    return scene;
+}
+
+// ---- writing ----
+
+using OrderedJson = nlohmann::ordered_json;
+
+// A float as the shortest decimal that reads back as the same float (0.1, not 0.100000001490116),
+// handed to nlohmann as the double nearest that decimal; nlohmann prints that double's shortest
+// form, which is the same decimal. from_chars, unlike strtod, ignores the C locale (Qt sets it
+// from the environment, and a decimal comma would break parsing).
+OrderedJson number(float value) {
+    char buffer[32];
+    const auto written = std::to_chars(buffer, buffer + sizeof buffer, value);
+    double d = 0.0;
+    const auto parsed = std::from_chars(buffer, written.ptr, d);
+    if (parsed.ec != std::errc()) return OrderedJson(nullptr);  // nan/inf: written as null, refused on load
+    return OrderedJson(d);
+}
+
+OrderedJson vec3(const Vec3& v) { return OrderedJson::array({number(v.x), number(v.y), number(v.z)}); }
+
+OrderedJson settingsJson(const WorldSettings& s) {
+    OrderedJson j = OrderedJson::object();
+    j["gravity"] = vec3(s.gravity);
+    j["timeStep"] = number(s.timeStep);
+    j["substeps"] = s.substeps;
+    j["solver"] = {{"velocityIterations", s.solver.velocityIterations},
+                   {"positionIterations", s.solver.positionIterations}};
+    j["damping"] = {{"linear", number(s.damping.linear)}, {"angular", number(s.damping.angular)}};
+    j["sleep"] = {{"enabled", s.sleep.enabled},
+                  {"linearVelocity", number(s.sleep.linearVelocity)},
+                  {"angularVelocity", number(s.sleep.angularVelocity)},
+                  {"timeToSleep", number(s.sleep.timeToSleep)}};
+    OrderedJson effects = OrderedJson::object();
+    for (int i = 0; i < kEffectCount; ++i) {
+        const Effect e = static_cast<Effect>(i);
+        effects[std::string(effectName(e))] = s.effects[e];
+    }
+    j["effects"] = std::move(effects);
+    return j;
+}
+
+const char* motionName(MotionType m) {
+    switch (m) {
+        case MotionType::Static: return "static";
+        case MotionType::Kinematic: return "kinematic";
+        case MotionType::Dynamic: break;
+    }
+    return "dynamic";
+}
+
+OrderedJson shapeJson(const Shape& shape) {
+    OrderedJson j = OrderedJson::object();
+    j["type"] = std::string(shapeTypeName(shape.type));
+    switch (shape.type) {
+        case ShapeType::Box: j["halfExtents"] = vec3(shape.halfExtents); break;
+        case ShapeType::Sphere: j["radius"] = number(shape.radius); break;
+        case ShapeType::Capsule:
+        case ShapeType::Cylinder:
+            j["radius"] = number(shape.radius);
+            j["halfHeight"] = number(shape.halfHeight);
+            break;
+        case ShapeType::ConvexHull: {
+            OrderedJson points = OrderedJson::array();
+            if (shape.hull)
+                for (const Vec3& p : shape.hull->sourcePoints()) points.push_back(vec3(p));
+            j["points"] = std::move(points);
+            break;
+        }
+    }
+    return j;
+}
+
+OrderedJson bodyJson(const SceneBody& sb) {
+    const BodyCreationSettings& b = sb.body;
+    OrderedJson j = OrderedJson::object();
+    j["name"] = b.name;
+    j["motion"] = motionName(b.motion);
+    j["shape"] = shapeJson(b.shape);
+    j["position"] = vec3(b.position);
+    const Quat& q = b.orientation;
+    j["orientation"] = OrderedJson::array({number(q.w), number(q.x), number(q.y), number(q.z)});
+    j["linearVelocity"] = vec3(b.linearVelocity);
+    j["angularVelocity"] = vec3(b.angularVelocity);
+    if (b.mass) j["mass"] = number(*b.mass);
+    else j["density"] = number(b.density);
+    j["friction"] = number(b.friction);
+    j["restitution"] = number(b.restitution);
+    j["ccd"] = b.ccd;
+    if (sb.color) j["color"] = vec3(*sb.color);
+    return j;
+}
+
+// Two-space indentation like dump(2), but arrays of plain values stay on one line, so vectors
+// read as [0, -9.81, 0] and a hull is one point per line.
+void writeJson(std::string& out, const OrderedJson& v, int indent) {
+    auto scalar = [](const OrderedJson& s) {
+        return s.dump(-1, ' ', false, nlohmann::detail::error_handler_t::replace);
+    };
+    const bool isContainer = v.is_object() || v.is_array();
+    if (!isContainer) {
+        out += scalar(v);
+        return;
+    }
+    if (v.empty()) {
+        out += v.is_object() ? "{}" : "[]";
+        return;
+    }
+    if (v.is_array()) {
+        bool flat = true;
+        for (const auto& e : v) flat = flat && !e.is_object() && !e.is_array();
+        if (flat) {
+            out += '[';
+            for (std::size_t i = 0; i < v.size(); ++i) {
+                if (i > 0) out += ", ";
+                out += scalar(v[i]);
+            }
+            out += ']';
+            return;
+        }
+    }
+    out += v.is_object() ? "{\n" : "[\n";
+    bool first = true;
+    for (auto it = v.begin(); it != v.end(); ++it) {
+        if (!first) out += ",\n";
+        first = false;
+        out.append(static_cast<std::size_t>(indent + 2), ' ');
+        if (v.is_object()) {
+            out += scalar(OrderedJson(it.key()));
+            out += ": ";
+        }
+        writeJson(out, *it, indent + 2);
+    }
+    out += '\n';
+    out.append(static_cast<std::size_t>(indent), ' ');
+    out += v.is_object() ? '}' : ']';
+}
+
+std::string osError(int error) { return std::system_category().message(error); }
+
+}  // namespace
+
+// ---- public API ----
+
+std::string Diagnostic::toString() const {
+    const char* kind = severity == Severity::Error ? "error" : "warning";
+    const std::string name = file.empty() ? "<scene>" : file;
+    if (line > 0)
+        return name + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " + kind + ": " + message;
+    if (!path.empty()) return name + ": " + kind + " at " + path + ": " + message;
+    return name + ": " + kind + ": " + message;
+}
+
+SceneLoadResult parseScene(std::string_view text, std::string_view fileName) {
+    SceneLoadResult result;
+    const std::string file(fileName);
+    std::optional<Json> root = io_detail::parseJson(text, file, result.diagnostics);
+    if (!root) return result;
+
+    Reader reader(file, result.diagnostics);
+    std::optional<Scene> scene;
+    if (!root->is_object()) {
+        reader.error("", "expected a JSON object at the top level, got " + io_detail::typeName(*root));
+    } else if (!Reader::find(*root, "format") && Reader::find(*root, "objects")) {
+        // The thesis app's files have no format tag; their "objects" list identifies them.
+        scene = io_detail::importThesisScene(*root, reader);
+    } else {
+        scene = readV1(*root, reader);
+    }
+    reader.finish();
+    if (reader.errorCount() == 0 && scene) result.scene = std::move(scene);
+    return result;
+}
+
+SceneLoadResult loadSceneFile(const std::filesystem::path& path) {
+    SceneLoadResult result;
+    const std::string name = path.string();
+    auto fail = [&](std::string message) {
+        Diagnostic d;
+        d.file = name;
+        d.message = std::move(message);
+        result.diagnostics.push_back(std::move(d));
+        return result;
+    };
+
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) return fail("cannot read the scene: it is a directory");
+    std::FILE* f = std::fopen(name.c_str(), "rb");
+    if (!f) return fail("cannot open the scene: " + osError(errno));
+    std::string text;
+    char buffer[65536];
+    bool tooLarge = false;
+    for (;;) {
+        const std::size_t n = std::fread(buffer, 1, sizeof buffer, f);
+        text.append(buffer, n);
+        if (text.size() > kMaxFileBytes) {
+            tooLarge = true;
+            break;
+        }
+        if (n < sizeof buffer) break;
+    }
+    const bool readError = std::ferror(f) != 0;
+    const int readErrno = errno;
+    std::fclose(f);
+    if (tooLarge) return fail("the file is larger than " + std::to_string(kMaxFileBytes >> 20) + " MiB; it is not a scene");
+    if (readError) return fail("cannot read the scene: " + osError(readErrno));
+    return parseScene(text, name);
+}
+
+std::string serializeScene(const Scene& scene) {
+    OrderedJson root = OrderedJson::object();
+    root["format"] = kFormatTag;
+    root["version"] = kFormatVersion;
+    root["settings"] = settingsJson(scene.settings);
+    OrderedJson bodies = OrderedJson::array();
+    for (const SceneBody& b : scene.bodies) bodies.push_back(bodyJson(b));
+    root["bodies"] = std::move(bodies);
+    root["joints"] = OrderedJson::array();
+    std::string out;
+    writeJson(out, root, 0);
+    out += '\n';
+    return out;
+}
+
+std::optional<std::string> saveSceneFile(const Scene& scene, const std::filesystem::path& requestedPath) {
+    namespace fs = std::filesystem;
+    const std::string text = serializeScene(scene);
+    const std::string target = requestedPath.string();
+    auto failure = [&](const std::string& why) { return "cannot save '" + target + "': " + why; };
+
+    if (requestedPath.filename().empty()) return failure("the path names no file");
+    std::error_code ec;
+    if (fs::is_directory(requestedPath, ec)) return failure(osError(EISDIR));
+    // Saving through a symbolic link replaces the file it points to, not the link.
+    fs::path path = requestedPath;
+    if (fs::is_symlink(requestedPath, ec)) {
+        const fs::path resolved = fs::canonical(requestedPath, ec);
+        if (!ec) path = resolved;
+    }
+
+    // The temporary lives beside the target so the final rename stays within one file system (and
+    // is therefore atomic); its name is random so concurrent saves cannot collide.
+    std::random_device random;
+    const fs::path temp = path.parent_path() / ("." + path.filename().string() + ".tmp-" + std::to_string(random()));
+    std::FILE* f = std::fopen(temp.string().c_str(), "wbx");  // x: never reuse an existing file
+    if (!f) return failure(osError(errno));
+
+    bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size() && std::fflush(f) == 0;
+    int error = ok ? 0 : errno;
+    if (ok && ::fsync(fileno(f)) != 0) {
+        ok = false;
+        error = errno;
+    }
+    if (std::fclose(f) != 0 && ok) {
+        ok = false;
+        error = errno;
+    }
+    if (ok) {
+        // Keep the permissions of the file being replaced.
+        const fs::file_status old = fs::status(path, ec);
+        if (!ec && fs::exists(old)) fs::permissions(temp, old.permissions(), ec);
+        fs::rename(temp, path, ec);
+        if (!ec) return std::nullopt;
+        const std::string why = ec.message();
+        fs::remove(temp, ec);
+        return failure(why);
+    }
+    std::error_code ignored;
+    fs::remove(temp, ignored);
+    return failure(osError(error == 0 ? EIO : error));
+}
+
+std::optional<std::string> applySettingOverride(Scene& scene, std::string_view assignment) {
+    const std::size_t eq = assignment.find('=');
+    if (eq == std::string_view::npos || eq == 0)
+        return "expected key=value (for example solver.velocityIterations=20), got '" + std::string(assignment) + "'";
+    const std::string key(assignment.substr(0, eq));
+    const std::string valueText(assignment.substr(eq + 1));
+
+    // Work on the settings as they would be saved, so every key the file format has can be set,
+    // and the new value goes through exactly the validation a file would.
+    Json settings = Json::parse(settingsJson(scene.settings).dump());
+    Json* node = &settings;
+    std::size_t start = 0;
+    while (start <= key.size()) {
+        const std::size_t dot = std::min(key.find('.', start), key.size());
+        const std::string segment = key.substr(start, dot - start);
+        if (node->is_object() && node->contains(segment)) {
+            node = &(*node)[segment];
+        } else if (node->is_array() && !segment.empty() && segment.size() < 4 &&
+                   segment.find_first_not_of("0123456789") == std::string::npos &&
+                   std::stoul(segment) < node->size()) {
+            node = &(*node)[std::stoul(segment)];  // gravity.1=-1.62
+        } else {
+            return "unknown setting '" + key + "'";
+        }
+        start = dot + 1;
+    }
+
+    Json value = Json::parse(valueText, nullptr, /*allow_exceptions=*/false);
+    if (value.is_discarded()) {
+        // Not JSON: a bare word is taken as a string; something meant as a number gets a clear word.
+        const bool looksNumeric = !valueText.empty() && std::string_view("0123456789+-.").find(valueText.front()) != std::string_view::npos;
+        if (looksNumeric)
+            return "invalid value for setting '" + key + "': '" + valueText + "' is not a valid finite number";
+        value = valueText;
+    }
+    *node = std::move(value);
+
+    std::vector<Diagnostic> diagnostics;
+    Reader reader("--set", diagnostics);
+    WorldSettings updated;
+    readSettings(reader, settings, "", updated);
+    reader.finish();
+    if (!diagnostics.empty())
+        return "invalid value for setting '" + key + "': " + diagnostics.front().message;
+    scene.settings = updated;
+    return std::nullopt;
+}
+
+}  // namespace simcore

@@ -1,1 +1,201 @@
-// placeholder until implemented in this session
+#include "simcore/shapes/shape.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace simcore {
+
+std::string_view shapeTypeName(ShapeType type) {
+    switch (type) {
+    case ShapeType::Sphere: return "sphere";
+    case ShapeType::Box: return "box";
+    case ShapeType::Capsule: return "capsule";
+    case ShapeType::Cylinder: return "cylinder";
+    case ShapeType::ConvexHull: return "convexHull";
+    }
+    return "unknown";
+}
+
+Shape Shape::sphere(float radius) {
+    Shape s;
+    s.type = ShapeType::Sphere;
+    s.radius = radius;
+    return s;
+}
+
+Shape Shape::box(const Vec3& halfExtents) {
+    Shape s;
+    s.type = ShapeType::Box;
+    s.halfExtents = halfExtents;
+    return s;
+}
+
+Shape Shape::capsule(float radius, float halfHeight) {
+    Shape s;
+    s.type = ShapeType::Capsule;
+    s.radius = radius;
+    s.halfHeight = halfHeight;
+    return s;
+}
+
+Shape Shape::cylinder(float radius, float halfHeight) {
+    Shape s;
+    s.type = ShapeType::Cylinder;
+    s.radius = radius;
+    s.halfHeight = halfHeight;
+    return s;
+}
+
+Shape Shape::convexHull(std::shared_ptr<const ConvexHull> hull) {
+    Shape s;
+    s.type = ShapeType::ConvexHull;
+    s.hull = std::move(hull);
+    return s;
+}
+
+namespace {
+
+// Unit vector along v; for a zero vector any unit vector is an equally valid support direction.
+Vec3 directionOrX(const Vec3& v) {
+    const float length2 = lengthSquared(v);
+    return length2 > 0.0f ? v / std::sqrt(length2) : Vec3(1.0f, 0.0f, 0.0f);
+}
+
+bool hasHull(const Shape& shape) { return shape.hull && !shape.hull->vertices().empty(); }
+
+}  // namespace
+
+Vec3 support(const Shape& shape, const Vec3& direction) {
+    switch (shape.type) {
+    case ShapeType::Sphere:
+        return shape.radius * directionOrX(direction);
+    case ShapeType::Box:
+        return {direction.x >= 0.0f ? shape.halfExtents.x : -shape.halfExtents.x,
+                direction.y >= 0.0f ? shape.halfExtents.y : -shape.halfExtents.y,
+                direction.z >= 0.0f ? shape.halfExtents.z : -shape.halfExtents.z};
+    case ShapeType::Capsule: {
+        const float endY = direction.y >= 0.0f ? shape.halfHeight : -shape.halfHeight;
+        return Vec3(0.0f, endY, 0.0f) + shape.radius * directionOrX(direction);
+    }
+    case ShapeType::Cylinder: {
+        const float capY = direction.y >= 0.0f ? shape.halfHeight : -shape.halfHeight;
+        const float radial2 = direction.x * direction.x + direction.z * direction.z;
+        // Straight along the axis the whole cap is extreme; its centre is as good as any point.
+        if (radial2 <= 0.0f) return {0.0f, capY, 0.0f};
+        const float scale = shape.radius / std::sqrt(radial2);
+        return {direction.x * scale, capY, direction.z * scale};
+    }
+    case ShapeType::ConvexHull:
+        return hasHull(shape) ? shape.hull->support(direction) : Vec3(0.0f);
+    }
+    return Vec3(0.0f);
+}
+
+Aabb localBounds(const Shape& shape) {
+    switch (shape.type) {
+    case ShapeType::Sphere:
+        return Aabb::fromCenterHalfExtents(Vec3(0.0f), Vec3(shape.radius));
+    case ShapeType::Box:
+        return Aabb::fromCenterHalfExtents(Vec3(0.0f), shape.halfExtents);
+    case ShapeType::Capsule:
+        return Aabb::fromCenterHalfExtents(
+            Vec3(0.0f), Vec3(shape.radius, shape.halfHeight + shape.radius, shape.radius));
+    case ShapeType::Cylinder:
+        return Aabb::fromCenterHalfExtents(Vec3(0.0f), Vec3(shape.radius, shape.halfHeight, shape.radius));
+    case ShapeType::ConvexHull: {
+        // A hull-less shape still gets a point box so broad phases never see an empty one.
+        if (!hasHull(shape)) return {Vec3(0.0f), Vec3(0.0f)};
+        Aabb bounds;
+        for (const Vec3& v : shape.hull->vertices()) bounds.grow(v);
+        return bounds;
+    }
+    }
+    return {Vec3(0.0f), Vec3(0.0f)};
+}
+
+Aabb worldBounds(const Shape& shape, const Transform& transform) {
+    const Mat3 rotation = glm::mat3_cast(transform.rotation);
+    // GLM matrices are column-major: rotation[j] is the image of local axis j.
+    const Vec3& axisY = rotation[1];
+
+    switch (shape.type) {
+    case ShapeType::Sphere:
+        return Aabb::fromCenterHalfExtents(transform.position, Vec3(shape.radius));
+    case ShapeType::Box: {
+        // World half extent along axis i: sum over local axes j of |R_ij| * h_j.
+        Vec3 half(0.0f);
+        for (int j = 0; j < 3; ++j) half += glm::abs(rotation[j]) * shape.halfExtents[j];
+        return Aabb::fromCenterHalfExtents(transform.position, half);
+    }
+    case ShapeType::Capsule: {
+        const Vec3 half = shape.halfHeight * glm::abs(axisY) + Vec3(shape.radius);
+        return Aabb::fromCenterHalfExtents(transform.position, half);
+    }
+    case ShapeType::Cylinder: {
+        // A cap disc of radius r with unit normal a reaches r * sqrt(1 - a_i^2) along world axis i.
+        Vec3 half;
+        for (int i = 0; i < 3; ++i) {
+            const float a = axisY[i];
+            half[i] = shape.halfHeight * std::abs(a) + shape.radius * std::sqrt(std::max(0.0f, 1.0f - a * a));
+        }
+        return Aabb::fromCenterHalfExtents(transform.position, half);
+    }
+    case ShapeType::ConvexHull: {
+        if (!hasHull(shape)) return {transform.position, transform.position};
+        Aabb bounds;
+        for (const Vec3& v : shape.hull->vertices()) bounds.grow(rotation * v);
+        bounds.min += transform.position;
+        bounds.max += transform.position;
+        return bounds;
+    }
+    }
+    return {transform.position, transform.position};
+}
+
+float volume(const Shape& shape) {
+    switch (shape.type) {
+    case ShapeType::Sphere:
+        return 4.0f / 3.0f * kPi * shape.radius * shape.radius * shape.radius;
+    case ShapeType::Box:
+        return 8.0f * shape.halfExtents.x * shape.halfExtents.y * shape.halfExtents.z;
+    case ShapeType::Capsule:
+        return kPi * shape.radius * shape.radius * (2.0f * shape.halfHeight + 4.0f / 3.0f * shape.radius);
+    case ShapeType::Cylinder:
+        return kPi * shape.radius * shape.radius * 2.0f * shape.halfHeight;
+    case ShapeType::ConvexHull:
+        // Unit density makes the mass the volume; the decomposition is in double precision.
+        return massProperties(shape, 1.0f).mass;
+    }
+    return 0.0f;
+}
+
+float minimumExtent(const Shape& shape) {
+    switch (shape.type) {
+    case ShapeType::Sphere:
+        return 2.0f * shape.radius;
+    case ShapeType::Box:
+        return 2.0f * std::min({shape.halfExtents.x, shape.halfExtents.y, shape.halfExtents.z});
+    case ShapeType::Capsule:
+        return 2.0f * shape.radius;
+    case ShapeType::Cylinder:
+        return 2.0f * std::min(shape.radius, shape.halfHeight);
+    case ShapeType::ConvexHull: {
+        // Thinnest width across the face normals. It is exact for boxes and prisms; for other hulls
+        // it can exceed the true minimum width (attained between two edges) by a small factor, which
+        // is acceptable for a threshold that only decides when to sweep.
+        if (!hasHull(shape)) return 0.0f;
+        const ConvexHull& hull = *shape.hull;
+        float thinnest = std::numeric_limits<float>::max();
+        for (const HullFace& face : hull.faces()) {
+            float deepest = face.offset;
+            for (const Vec3& v : hull.vertices()) deepest = std::min(deepest, glm::dot(face.normal, v));
+            thinnest = std::min(thinnest, face.offset - deepest);
+        }
+        return hull.faces().empty() ? 0.0f : thinnest;
+    }
+    }
+    return 0.0f;
+}
+
+}  // namespace simcore

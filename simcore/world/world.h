@@ -82,10 +82,18 @@ public:
     const BodyStorage& bodies() const { return bodies_; }
 
 private:
-    bool needs(Effect effect) const;
+    // What the awake bodies are doing, gathered once per step to decide which effects run.
+    struct Activity {
+        bool anyAwakeDynamic = false;
+        bool anySpinning = false;
+    };
+    Activity scanActivity() const;
+    bool needs(Effect effect, const Activity& activity) const;
     void updateSleep(float dt);
     void countEffect(Effect effect) { ++effectUsage_.stepsRun[static_cast<int>(effect)]; }
-    int checkedIndex(BodyId id) const;  // dense index, or throws std::out_of_range for a stale id
+    std::size_t indexOf(BodyId id) const;  // dense index; throws std::out_of_range for a stale id
+    BodyId bodyIdChecked(BodyId id) const;
+    void wakeIndex(std::size_t i);
 
     WorldSettings settings_;
     BodyStorage bodies_;

@@ -1,1 +1,21 @@
-// placeholder until implemented in this session
+#include "simcore/world/world_settings.h"
+
+namespace simcore {
+
+std::string_view effectName(Effect effect) {
+    switch (effect) {
+        case Effect::Gravity: return "gravity";
+        case Effect::Damping: return "damping";
+        case Effect::Gyroscopic: return "gyroscopic";
+        case Effect::Contacts: return "contacts";
+        case Effect::Friction: return "friction";
+        case Effect::Restitution: return "restitution";
+        case Effect::Joints: return "joints";
+        case Effect::Ccd: return "ccd";
+        case Effect::Sleeping: return "sleeping";
+        case Effect::Count: break;
+    }
+    return "unknown";
+}
+
+}  // namespace simcore

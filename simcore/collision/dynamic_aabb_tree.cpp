@@ -1,0 +1,344 @@
+#include "simcore/collision/dynamic_aabb_tree.h"
+
+#include <functional>
+#include <utility>
+
+namespace simcore {
+
+namespace {
+
+// Sibling search budget: nodes expanded by the branch-and-bound before it settles for the best
+// sibling found so far. Bounds the insertion cost where the bound prunes badly (a small box inside
+// many large ones) and lets the search queue be a fixed array.
+constexpr int kSiblingSearchBudget = 48;
+
+}  // namespace
+
+DynamicAabbTree::DynamicAabbTree(const AabbTreeSettings& settings, std::size_t initialProxyCapacity)
+    : settings_(settings) {
+    nodes_.resize(std::max<std::size_t>(2 * initialProxyCapacity, 2));
+    linkFreeNodes(0);
+}
+
+Aabb DynamicAabbTree::enlarge(const Aabb& tight, const Vec3& displacement) const {
+    const Vec3 ahead = settings_.displacementScale * displacement;
+    return {tight.min - settings_.margin + glm::min(ahead, Vec3(0.0f)),
+            tight.max + settings_.margin + glm::max(ahead, Vec3(0.0f))};
+}
+
+// Links nodes_[first, size) into the free list, lowest index first.
+void DynamicAabbTree::linkFreeNodes(std::size_t first) {
+    for (std::size_t i = first; i < nodes_.size(); ++i) {
+        nodes_[i] = Node{};
+        nodes_[i].parent = i + 1 < nodes_.size() ? static_cast<std::uint32_t>(i + 1) : freeList_;
+    }
+    if (first < nodes_.size()) freeList_ = static_cast<std::uint32_t>(first);
+}
+
+std::uint32_t DynamicAabbTree::allocateNode() {
+    if (freeList_ == kNull) {
+        const std::size_t old = nodes_.size();
+        nodes_.resize(2 * old);
+        linkFreeNodes(old);
+    }
+    const std::uint32_t index = freeList_;
+    Node& node = nodes_[index];
+    freeList_ = node.parent;
+    node = Node{};
+    node.height = 0;
+    ++nodeCount_;
+    return index;
+}
+
+void DynamicAabbTree::freeNode(std::uint32_t index) {
+    Node& node = nodes_[index];
+    node = Node{};
+    node.parent = freeList_;
+    freeList_ = index;
+    --nodeCount_;
+}
+
+ProxyId DynamicAabbTree::createProxy(const Aabb& tight, std::uint32_t userData, const Vec3& displacement) {
+    assert(!tight.isEmpty() && isFinite(tight.min) && isFinite(tight.max));
+    const std::uint32_t leaf = allocateNode();
+    nodes_[leaf].box = enlarge(tight, displacement);
+    nodes_[leaf].userData = userData;
+    insertLeaf(leaf);
+    ++proxyCount_;
+    return leaf;
+}
+
+void DynamicAabbTree::destroyProxy(ProxyId id) {
+    assert(isProxy(id));
+    removeLeaf(id);
+    freeNode(id);
+    --proxyCount_;
+}
+
+bool DynamicAabbTree::moveProxy(ProxyId id, const Aabb& tight, const Vec3& displacement) {
+    assert(isProxy(id));
+    assert(!tight.isEmpty() && isFinite(tight.min) && isFinite(tight.max));
+    const Aabb fresh = enlarge(tight, displacement);
+    const Aabb& current = nodes_[id].box;
+    if (current.contains(tight) && current.surfaceArea() <= settings_.shrinkAreaRatio * fresh.surfaceArea()) {
+        return false;
+    }
+    removeLeaf(id);
+    nodes_[id].box = fresh;
+    insertLeaf(id);
+    return true;
+}
+
+// Branch and bound over the SAH cost of making `box` the sibling of a node S: the area of the new
+// parent, SA(S u box), plus the growth it causes in every ancestor of S. A subtree cannot do better
+// than SA(box) plus the growth already inherited at its root, which prunes it; expanding the lowest
+// such bound first finds good candidates early (Catto, GDC 2019).
+//
+// Equal costs are common where boxes coincide or nest (every choice then costs the same). Ties go to
+// the sibling whose new parent ends up shallowest (its depth plus its height), and tied subtrees are
+// still explored, shallow-ending first: otherwise every coincident box would be hung at the root
+// and the tree would grow into a list.
+std::uint32_t DynamicAabbTree::findBestSibling(const Aabb& box) const {
+    struct Candidate {
+        std::uint32_t node;
+        float inheritedCost;  // growth of the candidate's ancestors if box were inserted below them
+        int depth;
+        int reach;            // depth + height: how deep the new parent's subtree would reach
+    };
+    const auto laterFirst = [](const Candidate& a, const Candidate& b) {
+        return a.inheritedCost > b.inheritedCost || (a.inheritedCost == b.inheritedCost && a.reach > b.reach);
+    };
+
+    const float boxArea = box.surfaceArea();
+    std::uint32_t best = root_;
+    float bestCost = unionOf(nodes_[root_].box, box).surfaceArea();
+    int bestReach = nodes_[root_].height;
+
+    // Each expansion pops one candidate and pushes at most two, so the queue never exceeds budget + 1.
+    std::array<Candidate, kSiblingSearchBudget + 2> queue;
+    std::size_t queued = 0;
+    queue[queued++] = {root_, 0.0f, 0, nodes_[root_].height};
+    for (int expanded = 0; queued > 0 && expanded < kSiblingSearchBudget; ++expanded) {
+        std::pop_heap(queue.begin(), queue.begin() + queued, laterFirst);
+        const Candidate candidate = queue[--queued];
+        if (boxArea + candidate.inheritedCost > bestCost) break;  // no queued subtree can do better
+
+        const Node& node = nodes_[candidate.node];
+        const float directCost = unionOf(node.box, box).surfaceArea();
+        const float cost = directCost + candidate.inheritedCost;
+        if (cost < bestCost || (cost == bestCost && candidate.reach < bestReach)) {
+            bestCost = cost;
+            bestReach = candidate.reach;
+            best = candidate.node;
+        }
+        if (node.isLeaf()) continue;
+        const float childInherited = candidate.inheritedCost + directCost - node.box.surfaceArea();
+        if (boxArea + childInherited > bestCost) continue;
+        for (const std::uint32_t child : {node.child1, node.child2}) {
+            const int depth = candidate.depth + 1;
+            queue[queued++] = {child, childInherited, depth, depth + nodes_[child].height};
+            std::push_heap(queue.begin(), queue.begin() + queued, laterFirst);
+        }
+    }
+    return best;
+}
+
+void DynamicAabbTree::insertLeaf(std::uint32_t leaf) {
+    if (root_ == kNull) {
+        root_ = leaf;
+        nodes_[leaf].parent = kNull;
+        return;
+    }
+    const std::uint32_t sibling = findBestSibling(nodes_[leaf].box);
+    const std::uint32_t newParent = allocateNode();  // may reallocate nodes_: no references held
+    const std::uint32_t oldParent = nodes_[sibling].parent;
+
+    Node& parent = nodes_[newParent];
+    parent.parent = oldParent;
+    parent.child1 = sibling;
+    parent.child2 = leaf;
+    parent.box = unionOf(nodes_[sibling].box, nodes_[leaf].box);
+    parent.height = nodes_[sibling].height + 1;
+    nodes_[sibling].parent = newParent;
+    nodes_[leaf].parent = newParent;
+
+    if (oldParent == kNull) {
+        root_ = newParent;
+    } else if (nodes_[oldParent].child1 == sibling) {
+        nodes_[oldParent].child1 = newParent;
+    } else {
+        nodes_[oldParent].child2 = newParent;
+    }
+    refitAndRotateUpFrom(newParent);
+}
+
+void DynamicAabbTree::removeLeaf(std::uint32_t leaf) {
+    if (leaf == root_) {
+        root_ = kNull;
+        return;
+    }
+    const std::uint32_t parent = nodes_[leaf].parent;
+    const std::uint32_t grandparent = nodes_[parent].parent;
+    const std::uint32_t sibling = nodes_[parent].child1 == leaf ? nodes_[parent].child2 : nodes_[parent].child1;
+
+    nodes_[sibling].parent = grandparent;
+    freeNode(parent);
+    nodes_[leaf].parent = kNull;
+    if (grandparent == kNull) {
+        root_ = sibling;
+        return;
+    }
+    if (nodes_[grandparent].child1 == parent) {
+        nodes_[grandparent].child1 = sibling;
+    } else {
+        nodes_[grandparent].child2 = sibling;
+    }
+    refitAndRotateUpFrom(grandparent);
+}
+
+// Restores bounds and heights from `index` to the root, rotating each node on the way. Every
+// ancestor is visited even when its box did not change, because a rotation below may have changed
+// its height and a rotation at it may now pay off.
+void DynamicAabbTree::refitAndRotateUpFrom(std::uint32_t index) {
+    while (index != kNull) {
+        rotate(index);
+        Node& node = nodes_[index];
+        const Node& a = nodes_[node.child1];
+        const Node& b = nodes_[node.child2];
+        node.box = unionOf(a.box, b.box);
+        node.height = 1 + std::max(a.height, b.height);
+        index = node.parent;
+    }
+}
+
+// Tree rotation at node A with children B and C: swapping B with a child of C (or C with a child of
+// B) keeps A's box but changes the box of the child that receives the swap. Take the swap that
+// shrinks that box's area the most, if any does: it lowers the SAH cost without touching anything
+// above A. This is what keeps sorted or clustered insertion orders from degenerating into lists.
+// Among swaps that leave the area unchanged, take one that lowers A's height: coincident boxes
+// give the SAH no preference at all, and would otherwise pile up into a list.
+void DynamicAabbTree::rotate(std::uint32_t index) {
+    const Node& a = nodes_[index];
+    const std::uint32_t b = a.child1;
+    const std::uint32_t c = a.child2;
+    const Node& nodeB = nodes_[b];
+    const Node& nodeC = nodes_[c];
+    if (nodeB.isLeaf() && nodeC.isLeaf()) return;  // nothing to swap
+
+    float bestGain = 0.0f;
+    int bestHeight = 1 + std::max(nodeB.height, nodeC.height);  // A's height without a rotation
+    std::uint32_t bestChild = kNull;
+    std::uint32_t bestGrandchild = kNull;
+    const auto consider = [&](std::uint32_t child, const Node& other, std::uint32_t grandchild, std::uint32_t kept) {
+        // `child` moves down into `other`, taking the place of `grandchild`; `other` keeps `kept`.
+        const float gain = other.box.surfaceArea() - unionOf(nodes_[child].box, nodes_[kept].box).surfaceArea();
+        const int otherHeight = 1 + std::max(nodes_[child].height, nodes_[kept].height);
+        const int height = 1 + std::max(nodes_[grandchild].height, otherHeight);
+        if (gain > bestGain || (gain == bestGain && height < bestHeight)) {
+            bestGain = gain;
+            bestHeight = height;
+            bestChild = child;
+            bestGrandchild = grandchild;
+        }
+    };
+    if (!nodeB.isLeaf()) {
+        consider(c, nodeB, nodeB.child1, nodeB.child2);
+        consider(c, nodeB, nodeB.child2, nodeB.child1);
+    }
+    if (!nodeC.isLeaf()) {
+        consider(b, nodeC, nodeC.child1, nodeC.child2);
+        consider(b, nodeC, nodeC.child2, nodeC.child1);
+    }
+    if (bestChild != kNull) swapWithGrandchild(index, bestChild, bestGrandchild);
+}
+
+void DynamicAabbTree::swapWithGrandchild(std::uint32_t parent, std::uint32_t child, std::uint32_t grandchild) {
+    Node& a = nodes_[parent];
+    const std::uint32_t other = a.child1 == child ? a.child2 : a.child1;
+    Node& o = nodes_[other];
+
+    if (a.child1 == child) {
+        a.child1 = grandchild;
+    } else {
+        a.child2 = grandchild;
+    }
+    if (o.child1 == grandchild) {
+        o.child1 = child;
+    } else {
+        o.child2 = child;
+    }
+    nodes_[grandchild].parent = parent;
+    nodes_[child].parent = other;
+    o.box = unionOf(nodes_[o.child1].box, nodes_[o.child2].box);
+    o.height = 1 + std::max(nodes_[o.child1].height, nodes_[o.child2].height);
+}
+
+float DynamicAabbTree::areaRatio() const {
+    if (root_ == kNull) return 0.0f;
+    const float rootArea = nodes_[root_].box.surfaceArea();
+    if (rootArea <= 0.0f) return 0.0f;
+    double total = 0.0;
+    for (const Node& node : nodes_) {
+        if (node.isAllocated() && !node.isLeaf()) total += node.box.surfaceArea();
+    }
+    return static_cast<float>(total / rootArea);
+}
+
+bool DynamicAabbTree::validate(std::string* error) const {
+    const auto fail = [error](std::string message) {
+        if (error) *error = std::move(message);
+        return false;
+    };
+    const auto at = [](const char* what, std::uint32_t i) { return std::string(what) + " at node " + std::to_string(i); };
+
+    std::size_t freeCount = 0;
+    for (std::uint32_t i = freeList_; i != kNull; i = nodes_[i].parent) {
+        if (i >= nodes_.size()) return fail("free list leaves the pool");
+        if (nodes_[i].isAllocated()) return fail(at("allocated node on the free list", i));
+        if (++freeCount > nodes_.size()) return fail("free list has a cycle");
+    }
+    if (freeCount + nodeCount_ != nodes_.size()) return fail("free and allocated nodes do not add up to the pool");
+
+    if (root_ == kNull) {
+        if (nodeCount_ != 0 || proxyCount_ != 0) return fail("empty tree with allocated nodes");
+        return true;
+    }
+    if (root_ >= nodes_.size() || !nodes_[root_].isAllocated()) return fail("root is not an allocated node");
+    if (nodes_[root_].parent != kNull) return fail("root has a parent");
+
+    // Walks the tree from the root; every allocated node must be reached exactly once.
+    std::size_t reached = 0;
+    std::size_t leaves = 0;
+    std::vector<std::uint32_t> stack{root_};
+    while (!stack.empty()) {
+        const std::uint32_t i = stack.back();
+        stack.pop_back();
+        if (++reached > nodeCount_) return fail("more nodes reachable than allocated (cycle or shared child)");
+        const Node& node = nodes_[i];
+        if (node.isLeaf()) {
+            if (node.child2 != kNull) return fail(at("leaf with a second child", i));
+            if (node.height != 0) return fail(at("leaf with non-zero height", i));
+            if (node.box.isEmpty()) return fail(at("leaf with an empty box", i));
+            ++leaves;
+            continue;
+        }
+        for (const std::uint32_t child : {node.child1, node.child2}) {
+            if (child >= nodes_.size() || !nodes_[child].isAllocated()) return fail(at("child is not allocated", i));
+            if (nodes_[child].parent != i) return fail(at("child's parent link is wrong", i));
+            stack.push_back(child);
+        }
+        const Node& a = nodes_[node.child1];
+        const Node& b = nodes_[node.child2];
+        if (node.height != 1 + std::max(a.height, b.height)) return fail(at("wrong height", i));
+        const Aabb expected = unionOf(a.box, b.box);
+        if (node.box.min != expected.min || node.box.max != expected.max) {
+            return fail(at("box is not the union of its children", i));
+        }
+    }
+    if (reached != nodeCount_) return fail("allocated nodes unreachable from the root");
+    if (leaves != proxyCount_) return fail("leaf count differs from proxy count");
+    if (nodeCount_ != 2 * proxyCount_ - 1) return fail("node count is not 2 * proxies - 1");
+    return true;
+}
+
+}  // namespace simcore

@@ -1,0 +1,150 @@
+#pragma once
+// Internal to simcore/io (not part of the public API): JSON text to a DOM with exact syntax-error
+// positions, and a validating Reader that turns every problem into a Diagnostic with a JSON
+// pointer, so the v1 loader and the thesis importer report problems the same way.
+
+#include "simcore/io/scene_io.h"
+#include "simcore/math/math.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstddef>
+#include <initializer_list>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace simcore::io_detail {
+
+using Json = nlohmann::json;
+
+// At most this many diagnostics are kept; one more line summarises the rest. A hostile file with a
+// million bad entries still gets a readable answer, quickly.
+constexpr std::size_t kMaxDiagnostics = 100;
+
+// Deeper nesting than this is refused: no scene needs it, and it bounds memory and time.
+constexpr int kMaxNestingDepth = 64;
+
+// Parses `text` as strict JSON (no comments, no NaN/Infinity). Syntax errors become an error with
+// 1-based line and byte column; duplicate object keys become warnings (the last value is used, as
+// in most JSON readers, but the loss is reported). Returns nothing on a syntax error.
+std::optional<Json> parseJson(std::string_view text, const std::string& file, std::vector<Diagnostic>& out);
+
+// JSON pointer building (RFC 6901 escaping of '~' and '/').
+std::string childPath(const std::string& parent, std::string_view key);
+std::string childPath(const std::string& parent, std::size_t index);
+
+// "an object", "a number", ... for "expected X, got Y" messages.
+std::string typeName(const Json& value);
+
+// Short text for messages: the shortest that reads back as the same double, in plain decimals when
+// that is short (0.0001, 100000) and with an exponent otherwise (1e-09, 1e+300).
+std::string formatNumber(double value);
+
+// Accepted range of a number. `unit` (with its leading space, e.g. " m") is shown in messages.
+struct Range {
+    double min;
+    double max;
+    bool minExclusive;  // only for min == 0: the value must be positive, not merely non-negative
+    const char* unit = "";
+};
+
+class Reader {
+public:
+    // Diagnostics already in `out` (e.g. duplicate-key warnings) count towards the cap.
+    Reader(std::string file, std::vector<Diagnostic>& out) : file_(std::move(file)), out_(out), kept_(out.size()) {}
+    Reader(const Reader&) = delete;
+    Reader& operator=(const Reader&) = delete;
+
+    void error(const std::string& path, std::string message);
+    void warning(const std::string& path, std::string message);
+
+    int errorCount() const { return errors_; }
+    // True once enough errors were found that looking further is pointless.
+    bool full() const { return errors_ >= static_cast<int>(kMaxDiagnostics); }
+    // Appends one line summarising suppressed diagnostics, if any. Call once, when done.
+    void finish();
+
+    const std::string& file() const { return file_; }
+
+    // Object helpers. `find` returns null when the key is absent; `require` also reports it.
+    bool expectObject(const Json& value, const std::string& path);
+    bool expectArray(const Json& value, const std::string& path);
+    static const Json* find(const Json& object, std::string_view key);
+    const Json* require(const Json& object, const std::string& path, std::string_view key);
+    // Warns about every key of `object` not in `known` ("unknown key 'foo' (ignored)").
+    void checkKeys(const Json& object, const std::string& path, std::initializer_list<std::string_view> known,
+                   std::string_view context = {});
+    void checkKeys(const Json& object, const std::string& path, const std::vector<std::string_view>& known,
+                   std::string_view context = {});
+
+    // Typed reads. On failure the problem is reported at `path` and nothing is returned.
+    std::optional<float> readFloat(const Json& value, const std::string& path, const Range& range);
+    std::optional<int> readInt(const Json& value, const std::string& path, int min, int max);
+    std::optional<bool> readBool(const Json& value, const std::string& path);
+    std::optional<std::string> readString(const Json& value, const std::string& path);
+    // [x, y, z] with every component in `range`.
+    std::optional<Vec3> readVec3(const Json& value, const std::string& path, const Range& range);
+    // {"x": .., "y": .., "z": ..} (the thesis app's vectors); missing components are errors.
+    std::optional<Vec3> readXyz(const Json& value, const std::string& path, const Range& range);
+
+    // Range check of an already computed value, reported at `path`.
+    bool checkRange(double value, const std::string& path, const Range& range);
+
+    // Convenience for optional keys: when `key` is present in `object`, reads it into `target`.
+    // Returns false only when the key is present and invalid.
+    bool optionalFloat(const Json& object, const std::string& path, std::string_view key, const Range& range,
+                       float& target);
+    bool optionalInt(const Json& object, const std::string& path, std::string_view key, int min, int max,
+                     int& target);
+    bool optionalBool(const Json& object, const std::string& path, std::string_view key, bool& target);
+    bool optionalVec3(const Json& object, const std::string& path, std::string_view key, const Range& range,
+                      Vec3& target);
+
+private:
+    void add(Diagnostic::Severity severity, const std::string& path, std::string message);
+
+    std::string file_;
+    std::vector<Diagnostic>& out_;
+    std::size_t kept_ = 0;
+    int errors_ = 0;
+    int suppressedErrors_ = 0;
+    int suppressedWarnings_ = 0;
+    bool finished_ = false;
+};
+
+// Limits shared by the v1 loader and the thesis importer (documented in scene_io.cpp).
+namespace limits {
+inline constexpr Range kSize{1e-4, 1e5, false, " m"};            // half-extents, radii, half-heights
+inline constexpr Range kCoordinate{-1e6, 1e6, false, " m"};     // positions and hull points
+inline constexpr Range kMass{1e-6, 1e9, false, " kg"};
+inline constexpr Range kDensity{1e-3, 1e6, false, " kg/m^3"};
+inline constexpr Range kFriction{0.0, 100.0, false};
+inline constexpr Range kRestitution{0.0, 1.0, false};
+inline constexpr Range kLinearSpeed{-1e4, 1e4, false, " m/s"};
+inline constexpr Range kAngularSpeed{-1e4, 1e4, false, " rad/s"};
+inline constexpr Range kColor{0.0, 1.0, false};
+inline constexpr Range kQuaternionComponent{-1e6, 1e6, false};
+inline constexpr Range kGravity{-1e4, 1e4, false, " m/s^2"};
+inline constexpr Range kTimeStep{1e-6, 1.0, false, " s"};
+inline constexpr Range kDampingRate{0.0, 1e3, false, " 1/s"};
+inline constexpr Range kSleepSpeed{0.0, 1e3, false};
+inline constexpr Range kTimeToSleep{0.0, 1e6, false, " s"};
+inline constexpr int kMinSubsteps = 1, kMaxSubsteps = 64;
+inline constexpr int kMinVelocityIterations = 1, kMaxVelocityIterations = 1000;
+inline constexpr int kMinPositionIterations = 0, kMaxPositionIterations = 1000;
+inline constexpr std::size_t kMaxHullPoints = 4096;
+}  // namespace limits
+
+// Quaternion from the JSON orientation value; reported at `path` when it cannot be normalised.
+// Shared so thesis import and v1 agree on what a usable rotation is.
+std::optional<Quat> normalisedOrientation(Reader& reader, const Quat& q, const std::string& path);
+
+// Builds the hull shape of `points`, reporting a failure at `path`.
+std::optional<Shape> hullShape(Reader& reader, const std::vector<Vec3>& points, const std::string& path);
+
+// The thesis importer, given the parsed document (a top-level object with "objects").
+std::optional<Scene> importThesisScene(const Json& root, Reader& reader);
+
+}  // namespace simcore::io_detail
