@@ -1,9 +1,9 @@
 #pragma once
 // Dynamic bounding volume hierarchy over enlarged ("fat") AABBs: the broad phase's spatial index.
-// Leaves are proxies; each internal node bounds its two children exactly. Insertion picks the
-// sibling that minimises the surface-area heuristic (SAH) cost, then tree rotations on the way
-// back up undo the damage an unlucky insertion order does. A proxy keeps its leaf while its tight
-// box stays inside its fat box, so a slowly moving body touches the tree only every few steps.
+// Leaves are proxies; each internal node bounds its two children exactly. Insertion descends to a
+// sibling by the surface-area heuristic (SAH) cost, then tree rotations on the way back up undo the
+// damage an unlucky insertion order does. A proxy keeps its leaf while its tight box stays inside
+// its fat box, so a slowly moving body touches the tree only every few steps.
 //
 // All nodes live in one vector with an intrusive free list; it grows geometrically, so a tree whose
 // proxy count has levelled off never allocates again. Queries and ray casts keep their traversal
@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <array>
 #include <cassert>
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <type_traits>
@@ -37,15 +38,14 @@ struct AabbTreeSettings {
 struct PreparedRay {
     Vec3 origin{0.0f};
     Vec3 direction{0.0f};
-    Vec3 inverseDirection{0.0f};   // 1 / direction on the non-parallel axes
-    std::array<bool, 3> parallel{};  // direction so small on this axis that 1/d overflows
+    Vec3 inverseDirection{0.0f};     // 1 / direction on the non-parallel axes
+    std::array<bool, 3> parallel{};  // |direction| on this axis too small for 1/d (or zero)
 
     PreparedRay() = default;
     PreparedRay(const Vec3& rayOrigin, const Vec3& rayDirection) : origin(rayOrigin), direction(rayDirection) {
         for (int i = 0; i < 3; ++i) {
-            const float inverse = 1.0f / rayDirection[i];
-            parallel[i] = !isFinite(inverse);
-            inverseDirection[i] = parallel[i] ? 0.0f : inverse;
+            parallel[i] = !(std::abs(rayDirection[i]) > 1e-30f);
+            inverseDirection[i] = parallel[i] ? 0.0f : 1.0f / rayDirection[i];
         }
     }
 };
@@ -70,8 +70,6 @@ inline bool intersectRayAabb(const PreparedRay& ray, const Aabb& box, float maxF
     entryFraction = enter;
     return true;
 }
-
-inline Aabb unionOf(const Aabb& a, const Aabb& b) { return {glm::min(a.min, b.min), glm::max(a.max, b.max)}; }
 
 namespace detail {
 
@@ -180,7 +178,7 @@ private:
     void removeLeaf(std::uint32_t leaf);
     std::uint32_t findBestSibling(const Aabb& box) const;
     void refitAndRotateUpFrom(std::uint32_t index);
-    void rotate(std::uint32_t index);
+    std::uint32_t rotate(std::uint32_t index);  // returns the node the moved child went into, or kNull
     void swapWithGrandchild(std::uint32_t parent, std::uint32_t child, std::uint32_t grandchild);
 
     AabbTreeSettings settings_;

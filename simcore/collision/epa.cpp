@@ -37,14 +37,22 @@ constexpr double kAbsoluteTolerance = 8.0 * kFloatEpsilon;
 // Triangles thinner than this (height against their longest edge) have no trustworthy normal.
 constexpr double kDegenerateRatio = 1e-9;
 
+// No member initialisers, here and in PolytopeVertex: the polytope's arrays (30 kB) are left
+// uninitialised, and a slot is cleared when it is handed out.
 struct Face {
-    std::array<int, 3> vertex{};
-    std::array<int, 3> neighbor{};             // face across edge i (vertex[i] -> vertex[i + 1])
-    std::array<std::uint8_t, 3> neighborEdge{};  // the index of that edge in the neighbour
-    DVec3 normal{0.0};                         // outward unit normal (zero if degenerate)
-    double distance = 0.0;                     // signed distance of the plane from the origin
-    bool alive = false;
-    bool degenerate = false;
+    std::array<int, 3> vertex;
+    std::array<int, 3> neighbor;             // face across edge i (vertex[i] -> vertex[i + 1])
+    std::array<std::uint8_t, 3> neighborEdge;  // the index of that edge in the neighbour
+    DVec3 normal;                            // outward unit normal (zero if degenerate)
+    double distance;                         // signed distance of the plane from the origin
+    bool alive;
+    bool degenerate;
+};
+
+struct PolytopeVertex {
+    Vec3 w;  // a - b
+    Vec3 a;  // on A's core
+    Vec3 b;  // on B's core
 };
 
 struct HorizonEdge {
@@ -63,13 +71,13 @@ class Polytope {
 public:
     int vertexCount() const { return vertexCount_; }
     int faceSlots() const { return faceSlots_; }
-    const SupportPoint& vertex(int i) const { return vertices_[i]; }
+    const PolytopeVertex& vertex(int i) const { return vertices_[i]; }
     DVec3 position(int i) const { return DVec3(vertices_[i].w); }
     const Face& face(int i) const { return faces_[i]; }
 
     int addVertex(const SupportPoint& p) {
         if (vertexCount_ == kEpaMaxVertices) return -1;
-        vertices_[vertexCount_] = p;
+        vertices_[vertexCount_] = {p.w, p.a, p.b};
         return vertexCount_++;
     }
 
@@ -79,7 +87,7 @@ public:
         const DVec3 p0 = position(0);
         const double volume = glm::dot(position(1) - p0, glm::cross(position(2) - p0, position(3) - p0));
         // With a negative volume, face (0, 1, 2) faces away from vertex 3, i.e. outwards.
-        if (volume > 0.0f) std::swap(vertices_[1], vertices_[2]);
+        if (volume > 0.0) std::swap(vertices_[1], vertices_[2]);
         const int triangles[4][3] = {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}};
         for (const auto& t : triangles) {
             Face& f = faces_[allocateFace()];
@@ -217,7 +225,7 @@ private:
     int horizonStart(int k) const { return faces_[horizon_[k].face].vertex[(horizon_[k].edge + 1) % 3]; }
     int horizonEnd(int k) const { return faces_[horizon_[k].face].vertex[horizon_[k].edge]; }
 
-    std::array<SupportPoint, kEpaMaxVertices> vertices_;
+    std::array<PolytopeVertex, kEpaMaxVertices> vertices_;
     int vertexCount_ = 0;
     std::array<Face, kEpaMaxFaces> faces_;
     int faceSlots_ = 0;  // slots ever used
@@ -243,39 +251,42 @@ std::array<double, 3> faceWeights(const Polytope& polytope, const Face& f, const
     return {wa / sum, wb / sum, wc / sum};
 }
 
-// Deepest points for the nearest face: the shape points behind the origin's projection onto it.
 // A flat patch of C is split into several coplanar triangles at the same distance, and the nearest
-// by a rounding error need not be the one holding the projection: take the coplanar face that does.
-void faceWitness(const Polytope& polytope, int nearest, int faceSlots, Vec3& pointA, Vec3& pointB) {
+// by a rounding error need not be the one holding the origin's projection: find the one that does.
+int faceHoldingProjection(const Polytope& polytope, int nearest) {
     const Face& f = polytope.face(nearest);
     const DVec3 q = f.distance * f.normal;
-    int bestFace = nearest;
-    std::array<double, 3> best = faceWeights(polytope, f, q);
-    double bestLeast = std::min({best[0], best[1], best[2]});
+    std::array<double, 3> weights = faceWeights(polytope, f, q);
+    double bestLeast = std::min({weights[0], weights[1], weights[2]});
+    int best = nearest;
     constexpr double kCoplanarCosine = 1.0 - 1e-9;
-    for (int i = 0; i < faceSlots && bestLeast < 0.0; ++i) {
+    for (int i = 0; i < polytope.faceSlots() && bestLeast < 0.0; ++i) {
         const Face& g = polytope.face(i);
         if (i == nearest || !g.alive || g.degenerate || glm::dot(g.normal, f.normal) < kCoplanarCosine) continue;
-        const std::array<double, 3> weights = faceWeights(polytope, g, q);
+        weights = faceWeights(polytope, g, q);
         const double least = std::min({weights[0], weights[1], weights[2]});
         if (least > bestLeast) {
             bestLeast = least;
-            best = weights;
-            bestFace = i;
+            best = i;
         }
     }
-    // Whatever rounding leaves outside the triangle is clamped back in.
-    for (double& w : best) w = std::max(w, 0.0);
-    double sum = best[0] + best[1] + best[2];
+    return best;
+}
+
+// Deepest points of a face: the shape points behind the origin's projection onto it, with the
+// weights clamped into the triangle against rounding.
+void faceWitness(const Polytope& polytope, const Face& f, Vec3& pointA, Vec3& pointB) {
+    std::array<double, 3> weights = faceWeights(polytope, f, f.distance * f.normal);
+    for (double& w : weights) w = std::max(w, 0.0);
+    double sum = weights[0] + weights[1] + weights[2];
     if (!(sum > 0.0)) {
-        best = {1.0, 1.0, 1.0};
+        weights = {1.0, 1.0, 1.0};
         sum = 3.0;
     }
-    const Face& g = polytope.face(bestFace);
     DVec3 a(0.0), b(0.0);
     for (int k = 0; k < 3; ++k) {
-        a += (best[k] / sum) * DVec3(polytope.vertex(g.vertex[k]).a);
-        b += (best[k] / sum) * DVec3(polytope.vertex(g.vertex[k]).b);
+        a += (weights[k] / sum) * DVec3(polytope.vertex(f.vertex[k]).a);
+        b += (weights[k] / sum) * DVec3(polytope.vertex(f.vertex[k]).b);
     }
     pointA = Vec3(a);
     pointB = Vec3(b);
@@ -392,16 +403,19 @@ EpaResult epaCorePenetration(const CorePair& pair, const GjkSimplex& simplex) {
     Polytope polytope;
     polytope.initTetrahedron(start);
 
-    // Best upper bound so far, reported if the loop has to give up.
+    // Best upper bound so far and the face it came from (its vertices stay in the polytope), for
+    // when the loop has to give up.
     double bestUpper = std::numeric_limits<double>::infinity();
-    EpaResult best;
+    Face bestFace{};
 
     const auto giveUp = [&](EpaStatus status) {
-        EpaResult r = best;
-        r.status = status;
-        r.iterations = result.iterations;
-        r.depth = std::isfinite(bestUpper) ? float(std::max(bestUpper, 0.0)) : 0.0f;
-        return r;
+        result.status = status;
+        if (std::isfinite(bestUpper)) {
+            result.depth = float(std::max(bestUpper, 0.0));
+            result.normal = Vec3(bestFace.normal);
+            faceWitness(polytope, bestFace, result.pointA, result.pointB);
+        }
+        return result;
     };
 
     for (;;) {
@@ -415,8 +429,7 @@ EpaResult epaCorePenetration(const CorePair& pair, const GjkSimplex& simplex) {
         const double upper = glm::dot(f.normal, DVec3(p.w));
         if (upper < bestUpper) {
             bestUpper = upper;
-            best.normal = Vec3(f.normal);
-            faceWitness(polytope, nearest, polytope.faceSlots(), best.pointA, best.pointB);
+            bestFace = f;
         }
         const double tolerance = std::max(kRelativeTolerance * std::abs(upper), kAbsoluteTolerance * magnitude);
         bool onSurface = upper - f.distance <= tolerance;
@@ -427,7 +440,7 @@ EpaResult epaCorePenetration(const CorePair& pair, const GjkSimplex& simplex) {
         if (onSurface) {
             result.depth = float(std::max(f.distance, 0.0));
             result.normal = Vec3(f.normal);
-            faceWitness(polytope, nearest, polytope.faceSlots(), result.pointA, result.pointB);
+            faceWitness(polytope, polytope.face(faceHoldingProjection(polytope, nearest)), result.pointA, result.pointB);
             result.status = EpaStatus::Converged;
             return result;
         }

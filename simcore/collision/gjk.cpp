@@ -30,8 +30,12 @@ constexpr double kFloatEpsilon = std::numeric_limits<float>::epsilon();
 // Support points carry about an ulp of rounding of their coordinates, a little more after the
 // transform; distances below this fraction of the coordinates' size are indistinguishable from 0.
 constexpr double kCoordinateResolution = 8.0 * kFloatEpsilon;
-// GJK stops once the distance is known to this relative accuracy.
+// GJK stops once the distance is known to this relative accuracy, plus an ulp of the coordinates.
+// Tighter than the touching resolution: on curved features the closest points (and the normal)
+// are only as good as the square root of the distance's accuracy, so it pays to iterate on until
+// the duplicate / no-progress checks say rounding has the last word.
 constexpr double kRelativeTolerance = 1e-6;
+constexpr double kConvergenceResolution = kFloatEpsilon;
 // When progress stalls, bounds still further apart than this relative gap mean numerical trouble.
 constexpr double kStalledTolerance = 1e-3;
 // Simplices thinner than this (height against the longest edge) have no trustworthy plane or
@@ -246,14 +250,15 @@ GjkCoreResult runGjk(const CorePair& pair, GjkCache* cache, bool* separatedEarly
     double tolerance = kCoordinateResolution * magnitude;
     double gap = 0.0;  // |v|^2 - dot(v, w) of the last support point: |v| times the distance's uncertainty
     bool stalled = false;
+    DVec3 lastNonZero(0.0);  // the last estimate away from the origin, for the direction
 
     for (;;) {
         if (enclosed || vv <= tolerance * tolerance) {
             result.overlap = true;
             break;
         }
+        lastNonZero = v;
         const double length = std::sqrt(vv);
-        result.lastDirection = Vec3(-v / length);
         if (result.iterations == kGjkMaxIterations) {
             result.status = GjkStatus::MaxIterations;
             break;
@@ -275,7 +280,7 @@ GjkCoreResult runGjk(const CorePair& pair, GjkCache* cache, bool* separatedEarly
             break;
         }
         gap = vv - vw;
-        if (gap <= length * (kRelativeTolerance * length + tolerance)) break;
+        if (gap <= length * (kRelativeTolerance * length + kConvergenceResolution * magnitude)) break;
         if (isDuplicate(simplex, p.w, tolerance)) {
             stalled = true;
             break;
@@ -308,6 +313,7 @@ GjkCoreResult runGjk(const CorePair& pair, GjkCache* cache, bool* separatedEarly
         result.simplex.weights[i] = float(simplex.weights[i]);
     }
     result.simplex.count = simplex.count;
+    if (lastNonZero != DVec3(0.0)) result.lastDirection = Vec3(-glm::normalize(lastNonZero));
     result.pointA = Vec3(pointA);
     result.pointB = Vec3(pointB);
     result.closest = result.overlap && enclosed ? Vec3(0.0f) : Vec3(v);

@@ -49,13 +49,22 @@ struct Triangle {
     double offset = 0.0;
     std::vector<int> outside;  // points more than the tolerance above this plane
     bool alive = true;
+    int replacedBy = kNoTriangle;  // once dead: a triangle of the cone that replaced it
     int visitStamp = 0;  // marks triangles already tested in the current visibility search
 };
 
 struct HorizonEdge {
-    int a = 0, b = 0;  // directed as in the visible triangle being removed
-    int outer = kNoTriangle;  // the triangle that stays
+    int a = 0, b = 0;         // directed as in the visible triangle being removed
+    int inner = kNoTriangle;  // that visible triangle
+    int outer = kNoTriangle;  // the hidden triangle that stays
 };
+
+double distanceToLine(const DVec3& p, const DVec3& a, const DVec3& b) {
+    const DVec3 ab = b - a;
+    const double length = glm::length(ab);
+    if (length == 0.0) return glm::length(p - a);
+    return glm::length(glm::cross(p - a, ab)) / length;
+}
 
 class Quickhull {
 public:
@@ -113,35 +122,40 @@ private:
         }
     }
 
-    void markNear(int point) {
+    void markNear(int point, int nearestTriangle) {
         if (isNear_[point]) return;
         isNear_[point] = 1;
-        nearPoints_.push_back(point);
+        nearPoints_.push_back({point, nearestTriangle});
     }
 
     // Re-checks points that were dropped just above some plane against the current hull; returns
-    // whether any turned out to be outside (they are then queued for adding).
+    // whether any turned out to be outside (they are then queued for adding). The search starts at
+    // the triangle the point was nearest to, or whatever replaced it, and climbs to the neighbour
+    // the point is highest above.
     bool reassignNearPoints(std::vector<int>& pending) {
         bool reassigned = false;
-        std::vector<int> stillNear;
-        for (int p : nearPoints_) {
-            int best = kNoTriangle;
-            double bestHeight = -std::numeric_limits<double>::max();
-            for (int t = 0; t < int(triangles_.size()); ++t) {
-                if (!triangles_[t].alive) continue;
-                const double h = height(t, p);
-                if (h > bestHeight) {
-                    bestHeight = h;
-                    best = t;
+        std::vector<NearPoint> stillNear;
+        for (auto [p, t] : nearPoints_) {
+            while (!triangles_[t].alive) t = triangles_[t].replacedBy;
+            double h = height(t, p);
+            for (bool climbed = true; climbed;) {
+                climbed = false;
+                for (int g : triangles_[t].adjacent) {
+                    const double hg = height(g, p);
+                    if (hg > h) {
+                        h = hg;
+                        t = g;
+                        climbed = true;
+                    }
                 }
             }
-            if (bestHeight > eps_) {
-                triangles_[best].outside.push_back(p);
-                pending.push_back(best);
+            if (h > eps_) {
+                triangles_[t].outside.push_back(p);
+                pending.push_back(t);
                 isNear_[p] = 0;
                 reassigned = true;
-            } else if (bestHeight > nearAbove()) {
-                stillNear.push_back(p);
+            } else if (h > nearAbove()) {
+                stillNear.push_back({p, t});
             } else {
                 isNear_[p] = 0;
             }
@@ -221,6 +235,8 @@ private:
         }
         if (bestDistance <= eps_) return "the points are coplanar: the hull has no volume";
 
+        interior_ = (points_[i0] + points_[i1] + points_[i2] + points_[i3]) / 4.0;
+
         // The base triangle must face away from the apex.
         if (bestSigned > 0.0) std::swap(i1, i2);
         const std::array<int, 4> simplex{
@@ -258,13 +274,17 @@ private:
     void placePoint(int p, std::span<const int> candidates, std::span<const HorizonEdge> neighbours,
                     std::vector<int>& pending) {
         double highest = -std::numeric_limits<double>::max();
+        int nearest = kNoTriangle;
         for (int t : candidates) {
             const double h = height(t, p);
             if (h > eps_) {
                 triangles_[t].outside.push_back(p);
                 return;
             }
-            highest = std::max(highest, h);
+            if (h > highest) {
+                highest = h;
+                nearest = t;
+            }
         }
         for (const HorizonEdge& e : neighbours) {
             const double h = height(e.outer, p);
@@ -273,9 +293,12 @@ private:
                 pending.push_back(e.outer);
                 return;
             }
-            highest = std::max(highest, h);
+            if (h > highest) {
+                highest = h;
+                nearest = e.outer;
+            }
         }
-        if (highest > nearAbove()) markNear(p);
+        if (highest > nearAbove()) markNear(p, nearest);
     }
 
     std::vector<HorizonEdge> collectHorizon(const std::vector<int>& visibleSet) const {
@@ -283,7 +306,7 @@ private:
         for (int f : visibleSet) {
             for (int e = 0; e < 3; ++e) {
                 const int g = triangles_[f].adjacent[e];
-                if (!visible_[g]) horizon.push_back({triangles_[f].v[e], triangles_[f].v[(e + 1) % 3], g});
+                if (!visible_[g]) horizon.push_back({triangles_[f].v[e], triangles_[f].v[(e + 1) % 3], f, g});
             }
         }
         return horizon;
@@ -316,14 +339,21 @@ private:
         return true;
     }
 
-    // A horizon edge is folded when the cone triangle (a, b, eye) would lie back over the hidden
-    // triangle instead of continuing the surface: the eye is within the tolerance of the hidden
-    // triangle's plane and on its side of the edge. This happens only where the hull is
-    // (numerically) flat, and the hidden triangle then belongs to the visible region.
+    // A horizon edge is folded when the cone triangle (a, b, eye) would face into the hull,
+    // lying back over the hidden triangle beyond the edge instead of continuing the surface. Its
+    // plane would then have the interior point on its outer side, which no face of a convex hull
+    // containing the initial simplex can have. This happens only where the hull is numerically
+    // flat or slightly dented, and the hidden triangle then belongs to the visible region.
     bool isFolded(const HorizonEdge& e, const DVec3& eye) const {
-        if (height(e.outer, eye) <= -eps_) return false;
-        const DVec3 inward = glm::cross(triangles_[e.outer].normal, points_[e.a] - points_[e.b]);
-        return glm::dot(eye - points_[e.a], inward) > 0.0;
+        const DVec3& a = points_[e.a];
+        const DVec3 normal = glm::cross(points_[e.b] - a, eye - a);
+        return glm::dot(normal, interior_ - a) >= 0.0;
+    }
+
+    // A horizon edge nearly in line with the eye would give a sliver cone triangle with a
+    // meaningless normal; the hidden triangle beyond it must go too, so the cone passes around.
+    bool isDegenerate(const HorizonEdge& e, const DVec3& eye) const {
+        return distanceToLine(eye, points_[e.a], points_[e.b]) <= eps_;
     }
 
     // Grows the visible set so that its horizon can become a single loop: hidden triangles cut off
@@ -435,6 +465,7 @@ private:
             triangles_[cone[k]].adjacent[1] = cone[(k + 1) % h];
             triangles_[cone[k]].adjacent[2] = cone[(k + h - 1) % h];
         }
+        for (int t : visibleSet) triangles_[t].replacedBy = cone.front();
 
         // Points outside a removed triangle are now outside a new one, or inside. Within the
         // tolerance that is not guaranteed, so the hidden neighbours of the cone are tried too.
@@ -452,7 +483,7 @@ private:
             if (int(visibleSet.size()) >= aliveCount_) return false;
             bool grew = false;
             for (const HorizonEdge& e : collectHorizon(visibleSet)) {
-                if (!visible_[e.outer] && isFolded(e, points_[eye])) {
+                if (!visible_[e.outer] && (isFolded(e, points_[eye]) || isDegenerate(e, points_[eye]))) {
                     makeVisible(e.outer, visibleSet);
                     grew = true;
                 }
@@ -467,107 +498,70 @@ private:
     std::vector<DVec3> points_;
     double eps_;
     std::vector<Triangle> triangles_;
+    DVec3 interior_{0.0};  // centroid of the initial simplex, strictly inside the hull throughout
     int stamp_ = 0;
     int aliveCount_ = 0;
     std::vector<char> visible_;   // per triangle, set only while a point is being added
-    std::vector<int> nearPoints_; // dropped points that were within the tolerance above a plane
+    struct NearPoint {
+        int point;
+        int triangle;  // the one it was highest above when dropped
+    };
+    std::vector<NearPoint> nearPoints_; // dropped points that were within the tolerance above a plane
     std::vector<char> isNear_;    // per point: listed in nearPoints_
 };
 
 // A polygon face as a loop of point indices, CCW from outside.
 using Polygon = std::vector<int>;
 
-double distanceToLine(const DVec3& p, const DVec3& a, const DVec3& b) {
-    const DVec3 ab = b - a;
-    const double length = glm::length(ab);
-    if (length == 0.0) return glm::length(p - a);
-    return glm::length(glm::cross(p - a, ab)) / length;
+
+// The boundary of a set of triangles as one loop (CCW from outside), or empty if the boundary is
+// not a single simple loop.
+Polygon boundaryLoop(const std::vector<Triangle>& triangles, const std::vector<int>& members,
+                     const std::vector<int>& group) {
+    const int g = group[members.front()];
+    std::unordered_map<int, int> next;
+    for (int t : members) {
+        for (int e = 0; e < 3; ++e) {
+            if (group[triangles[t].adjacent[e]] == g) continue;
+            if (!next.emplace(triangles[t].v[e], triangles[t].v[(e + 1) % 3]).second) return {};
+        }
+    }
+    // Start from the lowest point index so the output does not depend on hash order.
+    int start = next.begin()->first;
+    for (const auto& entry : next) start = std::min(start, entry.first);
+    Polygon loop;
+    int v = start;
+    do {
+        loop.push_back(v);
+        const auto it = next.find(v);
+        if (it == next.end() || loop.size() > next.size()) return {};
+        v = it->second;
+    } while (v != start);
+    if (loop.size() != next.size()) return {};  // more than one loop: the set has a hole
+    return loop;
 }
 
-// Grows one polygon over adjacent hull triangles that lie within the tolerance of the seed
-// triangle's plane, keeping the polygon a simple loop that is convex up to the tolerance. The
-// loop is kept as next/previous links between point indices.
-class PolygonGrower {
-public:
-    PolygonGrower(const Quickhull& hull, int seed) : hull_(hull), seed_(hull.triangles()[seed]) {
-        const auto& v = seed_.v;
-        for (int i = 0; i < 3; ++i) link(v[i], v[(i + 1) % 3]);
+// Whether the loop turns left (seen from outside) at every vertex, allowing right turns of at most
+// the tolerance, i.e. nearly collinear vertices.
+bool isConvex(const Polygon& loop, const std::vector<DVec3>& points, const DVec3& normal, double eps) {
+    const std::size_t n = loop.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        const DVec3& p = points[loop[(i + n - 1) % n]];
+        const DVec3& x = points[loop[i]];
+        const DVec3& q = points[loop[(i + 1) % n]];
+        if (glm::dot(glm::cross(x - p, q - x), normal) < -eps * glm::length(q - p)) return false;
     }
+    return true;
+}
 
-    // Tries to add the triangle across the boundary edge a -> b.
-    bool tryAdd(int triangle, int a, int b) {
-        const Triangle& tri = hull_.triangles()[triangle];
-        if (glm::dot(tri.normal, seed_.normal) <= 0.0) return false;
-        int c = tri.v[0];
-        for (int v : tri.v) {
-            if (v != a && v != b) c = v;
-        }
-        if (std::abs(glm::dot(seed_.normal, point(c)) - seed_.offset) > hull_.tolerance()) return false;
-
-        const bool cOnLoop = next_.contains(c);
-        if (!cOnLoop) {
-            // The loop a -> b becomes a -> c -> b.
-            if (!convex(prev_[a], a, c) || !convex(a, c, b) || !convex(c, b, next_[b])) return false;
-            link(a, c);
-            link(c, b);
-            return true;
-        }
-        if (next_[b] == c && prev_[a] != c) {
-            // The triangle fills the notch a -> b -> c; b becomes interior.
-            if (!convex(prev_[a], a, c) || !convex(a, c, next_[c])) return false;
-            next_.erase(b);
-            prev_.erase(b);
-            link(a, c);
-            return true;
-        }
-        if (prev_[a] == c && next_[b] != c) {
-            // The triangle fills the notch c -> a -> b; a becomes interior.
-            if (!convex(prev_[c], c, b) || !convex(c, b, next_[b])) return false;
-            next_.erase(a);
-            prev_.erase(a);
-            link(c, b);
-            return true;
-        }
-        return false;  // touching the loop elsewhere would pinch it
-    }
-
-    // The loop, starting from its lowest point index so the output is deterministic.
-    Polygon loop() const {
-        int start = next_.begin()->first;
-        for (const auto& entry : next_) start = std::min(start, entry.first);
-        Polygon polygon;
-        int v = start;
-        do {
-            polygon.push_back(v);
-            v = next_.at(v);
-        } while (v != start);
-        return polygon;
-    }
-
-private:
-    const DVec3& point(int i) const { return hull_.points()[i]; }
-
-    void link(int from, int to) {
-        next_[from] = to;
-        prev_[to] = from;
-    }
-
-    // Left turn at x seen from outside, or a right turn of at most the tolerance.
-    bool convex(int p, int x, int q) const {
-        const DVec3 turn = glm::cross(point(x) - point(p), point(q) - point(x));
-        return glm::dot(turn, seed_.normal) >= -hull_.tolerance() * glm::length(point(q) - point(p));
-    }
-
-    const Quickhull& hull_;
-    const Triangle& seed_;
-    std::unordered_map<int, int> next_, prev_;
-};
-
-// Merges adjacent hull triangles lying within the tolerance of a common plane into convex
-// polygons. Polygons grow from the largest triangles, whose planes are the most accurate.
+// Merges adjacent hull triangles lying within the tolerance of a common plane into polygons.
+// Groups grow from the largest triangles, whose planes are the most accurate. On a curved,
+// finely sampled surface such a group can come out non-convex (or, rarely, not a disc); it is
+// then left as separate triangles, since faces must be convex.
 std::vector<Polygon> mergeCoplanarTriangles(const Quickhull& hull) {
     const auto& triangles = hull.triangles();
     const auto& points = hull.points();
+    const double eps = hull.tolerance();
 
     std::vector<int> bySize;
     std::vector<double> area(triangles.size(), 0.0);
@@ -579,26 +573,42 @@ std::vector<Polygon> mergeCoplanarTriangles(const Quickhull& hull) {
     }
     std::stable_sort(bySize.begin(), bySize.end(), [&](int x, int y) { return area[x] > area[y]; });
 
-    std::vector<char> merged(triangles.size(), 0);
+    std::vector<int> group(triangles.size(), -1);
     std::vector<Polygon> polygons;
+    int groupCount = 0;
     for (int seed : bySize) {
-        if (merged[seed]) continue;
-        PolygonGrower grower(hull, seed);
-        merged[seed] = 1;
+        if (group[seed] >= 0) continue;
+        const int g = groupCount++;
+        const Triangle& plane = triangles[seed];
+        std::vector<int> members;
         std::vector<int> stack{seed};
+        group[seed] = g;
         while (!stack.empty()) {
             const int t = stack.back();
             stack.pop_back();
-            for (int e = 0; e < 3; ++e) {
-                const int n = triangles[t].adjacent[e];
-                if (merged[n]) continue;
-                if (grower.tryAdd(n, triangles[t].v[e], triangles[t].v[(e + 1) % 3])) {
-                    merged[n] = 1;
+            members.push_back(t);
+            for (int n : triangles[t].adjacent) {
+                if (group[n] >= 0 || glm::dot(triangles[n].normal, plane.normal) <= 0.0) continue;
+                bool onPlane = true;
+                for (int v : triangles[n].v) {
+                    onPlane = onPlane && std::abs(glm::dot(plane.normal, points[v]) - plane.offset) <= eps;
+                }
+                if (onPlane) {
+                    group[n] = g;
                     stack.push_back(n);
                 }
             }
         }
-        polygons.push_back(grower.loop());
+
+        Polygon loop = members.size() > 1 ? boundaryLoop(triangles, members, group) : Polygon{};
+        if (!loop.empty() && isConvex(loop, points, plane.normal, eps)) {
+            polygons.push_back(std::move(loop));
+            continue;
+        }
+        for (int t : members) {
+            const auto& v = triangles[t].v;
+            polygons.push_back({v[0], v[1], v[2]});
+        }
     }
     return polygons;
 }
@@ -647,7 +657,8 @@ void removeDegreeTwoVertices(std::vector<Polygon>& polygons, const std::vector<D
         const int w = at(small, i + 1);
         const std::size_t j = indexOf(large, v);
         if (at(large, j + large.size() - 1) != w || at(large, j + 1) != u) continue;
-        if (distanceToLine(points[v], points[u], points[w]) > eps) continue;
+        // Both faces are convex up to the tolerance in their own planes, hence the slack.
+        if (distanceToLine(points[v], points[u], points[w]) > 2.0 * eps) continue;
         if (small.size() > 3) {
             small.erase(small.begin() + std::ptrdiff_t(i));
             large.erase(large.begin() + std::ptrdiff_t(j));

@@ -1,0 +1,777 @@
+#include "simcore/collision/collide_shapes.h"
+
+#include "simcore/collision/epa.h"
+#include "simcore/collision/gjk.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+namespace simcore {
+
+namespace {
+
+// Feature choice and alignment tolerances. The solver tolerates a few millimetres of slop, so a
+// feature only wins over a face when it is clearly better; this keeps resting stacks on stable
+// face contacts instead of flickering to edge contacts from round-off.
+constexpr float kLinearSlop = 0.005f;                 // m
+constexpr float kEdgeRelativeTolerance = 0.05f;       // edge must beat the best face by 5% of it...
+constexpr float kEdgeAbsoluteTolerance = 0.5f * kLinearSlop;  // ...plus this
+constexpr float kFaceRelativeTolerance = 0.02f;       // B's face must beat A's face by 2% (plus this)
+constexpr float kFaceAbsoluteTolerance = 0.1f * kLinearSlop;
+constexpr float kFaceAlignment = 0.98f;               // cos(~11°): feature counts as lying flat on a face
+constexpr float kLineParallel = 0.1f;                 // |cos| below which a segment lies along a face
+
+constexpr int kMaxClipVertices = 64;  // clipping polygons and contact candidates
+constexpr int kCylinderCapPoints = 8;
+
+// ---- Contact candidates and manifold reduction --------------------------------------------------
+
+struct Candidate {
+    Vec3 pointA{0.0f};
+    Vec3 pointB{0.0f};
+    float separation = 0.0f;
+    std::uint32_t featureId = 0;
+};
+
+struct Contacts {
+    Vec3 normal{0.0f, 1.0f, 0.0f};
+    std::array<Candidate, kMaxClipVertices> items{};
+    int count = 0;
+
+    void add(const Vec3& pointA, const Vec3& pointB, float separation, std::uint32_t featureId) {
+        if (count < kMaxClipVertices) items[count++] = {pointA, pointB, separation, featureId};
+    }
+
+    float deepestSeparation() const {
+        float deepest = std::numeric_limits<float>::max();
+        for (int i = 0; i < count; ++i) deepest = std::min(deepest, items[i].separation);
+        return deepest;
+    }
+};
+
+// Keeps at most four candidates spanning the largest area: the deepest (it carries the most
+// important constraint), the farthest from it, the one maximising the triangle, then the one
+// adding the most area to it. Areas are signed, measured in the contact plane.
+void reduceToManifold(const Contacts& contacts, ContactManifold& out) {
+    out.normal = contacts.normal;
+    out.pointCount = 0;
+    const auto keep = [&](int i) {
+        const Candidate& c = contacts.items[i];
+        out.points[out.pointCount++] = {c.pointA, c.pointB, c.separation, c.featureId};
+    };
+    if (contacts.count <= kMaxManifoldPoints) {
+        for (int i = 0; i < contacts.count; ++i) keep(i);
+        return;
+    }
+    const Vec3& n = contacts.normal;
+    const auto at = [&](int i) { return contacts.items[i].pointA; };
+
+    int first = 0;
+    for (int i = 1; i < contacts.count; ++i) {
+        if (contacts.items[i].separation < contacts.items[first].separation) first = i;
+    }
+    int second = -1;
+    float farthest = -1.0f;
+    for (int i = 0; i < contacts.count; ++i) {
+        const float d2 = lengthSquared(at(i) - at(first));
+        if (d2 > farthest) farthest = d2, second = i;
+    }
+    keep(first);
+    if (farthest <= 1e-12f) return;  // all candidates coincide
+    keep(second);
+
+    int third = -1;
+    float triangleArea = 0.0f;  // signed, twice the area
+    for (int i = 0; i < contacts.count; ++i) {
+        const float area = glm::dot(glm::cross(at(second) - at(first), at(i) - at(first)), n);
+        if (std::abs(area) > std::abs(triangleArea)) triangleArea = area, third = i;
+    }
+    if (third < 0 || std::abs(triangleArea) <= 1e-9f) return;  // collinear
+    keep(third);
+
+    // The fourth point lies outside one triangle edge; the area it adds is how negative its signed
+    // area against that edge is (with the triangle oriented counter-clockwise about n).
+    const float orientation = triangleArea > 0.0f ? 1.0f : -1.0f;
+    const std::array<int, 3> corners{first, second, third};
+    int fourth = -1;
+    float addedArea = -1e-9f;
+    for (int i = 0; i < contacts.count; ++i) {
+        for (int e = 0; e < 3; ++e) {
+            const Vec3 p = at(corners[e]);
+            const Vec3 q = at(corners[(e + 1) % 3]);
+            const float area = orientation * glm::dot(glm::cross(q - p, at(i) - p), n);
+            if (area < addedArea) addedArea = area, fourth = i;
+        }
+    }
+    if (fourth >= 0) keep(fourth);
+}
+
+// ---- Small geometry ------------------------------------------------------------------------------
+
+Vec3 perpendicularTo(const Vec3& v) {
+    const Vec3 other = std::abs(v.x) < 0.57f ? Vec3(1.0f, 0.0f, 0.0f) : Vec3(0.0f, 1.0f, 0.0f);
+    return glm::normalize(glm::cross(v, other));
+}
+
+Vec3 closestPointOnSegment(const Vec3& p, const Vec3& s0, const Vec3& s1) {
+    const Vec3 d = s1 - s0;
+    const float length2 = lengthSquared(d);
+    if (length2 <= 0.0f) return s0;
+    return s0 + std::clamp(glm::dot(p - s0, d) / length2, 0.0f, 1.0f) * d;
+}
+
+// Closest points of segments p0-p1 and q0-q1 (Ericson, Real-Time Collision Detection, 5.1.9).
+void closestPointsOfSegments(const Vec3& p0, const Vec3& p1, const Vec3& q0, const Vec3& q1, Vec3& onP, Vec3& onQ) {
+    const Vec3 d1 = p1 - p0;
+    const Vec3 d2 = q1 - q0;
+    const Vec3 r = p0 - q0;
+    const float a = glm::dot(d1, d1);
+    const float e = glm::dot(d2, d2);
+    const float f = glm::dot(d2, r);
+    constexpr float kTiny = 1e-12f;
+    float s = 0.0f;
+    float t = 0.0f;
+    if (a <= kTiny && e <= kTiny) {
+        // both points
+    } else if (a <= kTiny) {
+        t = std::clamp(f / e, 0.0f, 1.0f);
+    } else {
+        const float c = glm::dot(d1, r);
+        if (e <= kTiny) {
+            s = std::clamp(-c / a, 0.0f, 1.0f);
+        } else {
+            const float b = glm::dot(d1, d2);
+            const float denominator = a * e - b * b;
+            // Parallel segments: any s works; 0 is as good as any, t follows.
+            s = denominator > 1e-7f * a * e ? std::clamp((b * f - c * e) / denominator, 0.0f, 1.0f) : 0.0f;
+            t = (b * s + f) / e;
+            if (t < 0.0f) {
+                t = 0.0f;
+                s = std::clamp(-c / a, 0.0f, 1.0f);
+            } else if (t > 1.0f) {
+                t = 1.0f;
+                s = std::clamp((b - c) / a, 0.0f, 1.0f);
+            }
+        }
+    }
+    onP = p0 + s * d1;
+    onQ = q0 + t * d2;
+}
+
+// Transform taking `inner`'s local frame into `outer`'s local frame.
+Transform relativeTransform(const Transform& outer, const Transform& inner) {
+    Transform t;
+    t.rotation = glm::conjugate(outer.rotation) * inner.rotation;
+    t.position = outer.rotateInverse(inner.position - outer.position);
+    return t;
+}
+
+// Capsule/sphere core: a segment (degenerate for a sphere) in the world.
+struct Segment {
+    Vec3 p0{0.0f};
+    Vec3 p1{0.0f};
+};
+
+Segment capsuleSegment(const Shape& capsule, const Transform& t) {
+    return {t.apply(Vec3(0.0f, -capsule.halfHeight, 0.0f)), t.apply(Vec3(0.0f, capsule.halfHeight, 0.0f))};
+}
+
+// ---- Round pairs: sphere, capsule -----------------------------------------------------------------
+
+// Contact of two spheres with the given core points and radii; `fallbackNormal` when they coincide.
+void addRoundContact(const Vec3& coreA, float radiusA, const Vec3& coreB, float radiusB,
+                     const Vec3& fallbackNormal, float speculativeDistance, Contacts& contacts) {
+    const Vec3 d = coreB - coreA;
+    const float distance = glm::length(d);
+    const Vec3 n = distance > 1e-6f ? d / distance : fallbackNormal;
+    const float separation = glm::dot(d, n) - radiusA - radiusB;
+    if (separation > speculativeDistance) return;
+    contacts.normal = n;
+    contacts.add(coreA + radiusA * n, coreB - radiusB * n, separation, 0);
+}
+
+void collideSphereSphere(const Shape& a, const Transform& ta, const Shape& b, const Transform& tb, float spec,
+                         Contacts& contacts) {
+    addRoundContact(ta.position, a.radius, tb.position, b.radius, Vec3(0.0f, 1.0f, 0.0f), spec, contacts);
+}
+
+void collideSphereCapsule(const Shape& a, const Transform& ta, const Shape& b, const Transform& tb, float spec,
+                          Contacts& contacts) {
+    const Segment segment = capsuleSegment(b, tb);
+    const Vec3 onAxis = closestPointOnSegment(ta.position, segment.p0, segment.p1);
+    addRoundContact(ta.position, a.radius, onAxis, b.radius, perpendicularTo(tb.rotate(Vec3(0.0f, 1.0f, 0.0f))),
+                    spec, contacts);
+}
+
+void collideCapsuleCapsule(const Shape& a, const Transform& ta, const Shape& b, const Transform& tb, float spec,
+                           Contacts& contacts) {
+    const Segment sa = capsuleSegment(a, ta);
+    const Segment sb = capsuleSegment(b, tb);
+    Vec3 onA, onB;
+    closestPointsOfSegments(sa.p0, sa.p1, sb.p0, sb.p1, onA, onB);
+
+    const Vec3 axisA = ta.rotate(Vec3(0.0f, 1.0f, 0.0f));
+    const Vec3 axisB = tb.rotate(Vec3(0.0f, 1.0f, 0.0f));
+    const Vec3 d = onB - onA;
+    const float distance = glm::length(d);
+    Vec3 n;
+    if (distance > 1e-6f) {
+        n = d / distance;
+    } else {
+        // Axes intersect: the common perpendicular separates them fastest.
+        const Vec3 across = glm::cross(axisA, axisB);
+        n = lengthSquared(across) > 1e-8f ? glm::normalize(across) : perpendicularTo(axisA);
+        if (glm::dot(n, tb.position - ta.position) < 0.0f) n = -n;
+    }
+    const float radiusSum = a.radius + b.radius;
+    if (glm::dot(d, n) - radiusSum > spec) return;
+    contacts.normal = n;
+
+    // Parallel capsules rest along a line: two points bound the overlap of the segments.
+    const float lengthA = 2.0f * a.halfHeight;
+    if (lengthA > 0.0f && b.halfHeight > 0.0f && lengthSquared(glm::cross(axisA, axisB)) < 1e-4f) {
+        const float t0 = glm::dot(sb.p0 - sa.p0, axisA);
+        const float t1 = glm::dot(sb.p1 - sa.p0, axisA);
+        const float low = std::max(0.0f, std::min(t0, t1));
+        const float high = std::min(lengthA, std::max(t0, t1));
+        if (high - low > kLinearSlop) {
+            const std::array<float, 2> ends{low, high};
+            for (int i = 0; i < 2; ++i) {
+                const Vec3 pa = sa.p0 + ends[i] * axisA;
+                const Vec3 pb = closestPointOnSegment(pa, sb.p0, sb.p1);
+                const float separation = glm::dot(pb - pa, n) - radiusSum;
+                if (separation <= spec) {
+                    contacts.add(pa + a.radius * n, pb - b.radius * n, separation, std::uint32_t(i + 1));
+                }
+            }
+            if (contacts.count > 0) return;
+        }
+    }
+    contacts.add(onA + a.radius * n, onB - b.radius * n, glm::dot(d, n) - radiusSum, 0);
+}
+
+// Box (A) and sphere (B): closest point of the box, or the nearest face when the centre is inside.
+void collideBoxSphere(const Shape& a, const Transform& ta, const Shape& b, const Transform& tb, float spec,
+                      Contacts& contacts) {
+    const Vec3 centre = ta.applyInverse(tb.position);
+    const Vec3& h = a.halfExtents;
+    Vec3 onBox = glm::clamp(centre, -h, h);
+    Vec3 localNormal;
+    float separation;
+    const Vec3 outside = centre - onBox;
+    const float outsideDistance = glm::length(outside);
+    if (outsideDistance > 1e-6f) {
+        localNormal = outside / outsideDistance;
+        separation = outsideDistance - b.radius;
+    } else {
+        // Inside: leave through the nearest face.
+        int axis = 0;
+        float nearest = std::numeric_limits<float>::max();
+        for (int i = 0; i < 3; ++i) {
+            const float toFace = h[i] - std::abs(centre[i]);
+            if (toFace < nearest) nearest = toFace, axis = i;
+        }
+        const float sign = centre[axis] >= 0.0f ? 1.0f : -1.0f;
+        localNormal = Vec3(0.0f);
+        localNormal[axis] = sign;
+        onBox = centre;
+        onBox[axis] = sign * h[axis];
+        separation = -nearest - b.radius;
+    }
+    if (separation > spec) return;
+    contacts.normal = ta.rotate(localNormal);
+    contacts.add(ta.apply(onBox), tb.position - b.radius * contacts.normal, separation, 0);
+}
+
+// ---- Polyhedra: box and hull through one view -----------------------------------------------------
+
+// A box or a hull as faces (CCW polygons with outward normals), edges with their two faces, and a
+// support function, all in the shape's local frame. The box's topology is computed, not stored.
+class Polyhedron {
+public:
+    explicit Polyhedron(const Shape& shape) {
+        if (shape.type == ShapeType::Box) {
+            halfExtents_ = shape.halfExtents;
+        } else if (shape.hull && !shape.hull->faces().empty()) {
+            hull_ = shape.hull.get();
+        } else {
+            valid_ = false;
+        }
+    }
+
+    bool valid() const { return valid_; }
+
+    int faceCount() const { return hull_ ? int(hull_->faces().size()) : 6; }
+    // Box faces: 2k is +axis k, 2k+1 is -axis k.
+    Vec3 faceNormal(int f) const {
+        if (hull_) return hull_->faces()[f].normal;
+        Vec3 n(0.0f);
+        n[f / 2] = (f % 2 == 0) ? 1.0f : -1.0f;
+        return n;
+    }
+    float faceOffset(int f) const { return hull_ ? hull_->faces()[f].offset : halfExtents_[f / 2]; }
+    int faceVertexCount(int f) const { return hull_ ? int(hull_->faces()[f].vertexCount) : 4; }
+    Vec3 faceVertex(int f, int i) const {
+        if (hull_) {
+            const HullFace& face = hull_->faces()[f];
+            return hull_->vertices()[hull_->faceVertexIndices()[face.firstIndex + std::uint32_t(i)]];
+        }
+        // Corners (-,-), (+,-), (+,+), (-,+) in the face's (u, v) axes run CCW about +axis; the
+        // negative face walks them backwards.
+        const int axis = f / 2;
+        const bool positive = f % 2 == 0;
+        const int corner = positive ? i : 3 - i;
+        const int u = (axis + 1) % 3;
+        const int v = (axis + 2) % 3;
+        Vec3 p;
+        p[axis] = positive ? halfExtents_[axis] : -halfExtents_[axis];
+        p[u] = (corner == 1 || corner == 2) ? halfExtents_[u] : -halfExtents_[u];
+        p[v] = (corner >= 2) ? halfExtents_[v] : -halfExtents_[v];
+        return p;
+    }
+
+    int edgeCount() const { return hull_ ? int(hull_->edges().size()) : 12; }
+    void edge(int e, Vec3& p0, Vec3& p1, int& face0, int& face1) const {
+        if (hull_) {
+            const HullEdge& edge = hull_->edges()[e];
+            p0 = hull_->vertices()[edge.a];
+            p1 = hull_->vertices()[edge.b];
+            face0 = int(edge.faceA);
+            face1 = int(edge.faceB);
+            return;
+        }
+        // Box edge e runs along axis e/4 at the corner of the u and v faces picked by e's low bits.
+        const int axis = e / 4;
+        const int u = (axis + 1) % 3;
+        const int v = (axis + 2) % 3;
+        const bool positiveU = (e & 1) != 0;
+        const bool positiveV = (e & 2) != 0;
+        p0[u] = positiveU ? halfExtents_[u] : -halfExtents_[u];
+        p0[v] = positiveV ? halfExtents_[v] : -halfExtents_[v];
+        p1 = p0;
+        p0[axis] = -halfExtents_[axis];
+        p1[axis] = halfExtents_[axis];
+        face0 = 2 * u + (positiveU ? 0 : 1);
+        face1 = 2 * v + (positiveV ? 0 : 1);
+    }
+
+    Vec3 support(const Vec3& direction) const {
+        if (hull_) return hull_->support(direction);
+        return {direction.x >= 0.0f ? halfExtents_.x : -halfExtents_.x,
+                direction.y >= 0.0f ? halfExtents_.y : -halfExtents_.y,
+                direction.z >= 0.0f ? halfExtents_.z : -halfExtents_.z};
+    }
+
+    // An interior point, to orient edge-edge axes outwards.
+    Vec3 centroid() const {
+        if (!hull_) return Vec3(0.0f);
+        Vec3 sum(0.0f);
+        for (const Vec3& v : hull_->vertices()) sum += v;
+        return sum / float(hull_->vertices().size());
+    }
+
+    // The face whose outward normal (world) is most aligned with `worldDirection`.
+    int mostAlignedFace(const Transform& t, const Vec3& worldDirection, float& alignment) const {
+        const Vec3 local = t.rotateInverse(worldDirection);
+        int best = 0;
+        alignment = -std::numeric_limits<float>::max();
+        for (int f = 0; f < faceCount(); ++f) {
+            const float d = glm::dot(faceNormal(f), local);
+            if (d > alignment) alignment = d, best = f;
+        }
+        return best;
+    }
+
+    // The face to clip against a reference face with world normal `referenceNormal`: the most
+    // anti-parallel face among those holding the deepest vertex, so that vertex is never lost. (The
+    // globally most anti-parallel face of an irregular hull can miss it.) For a box they coincide.
+    int incidentFace(const Transform& t, const Vec3& referenceNormal) const {
+        float alignment;
+        if (!hull_) return mostAlignedFace(t, -referenceNormal, alignment);
+        const Vec3 local = t.rotateInverse(-referenceNormal);
+        const std::vector<Vec3>& vertices = hull_->vertices();
+        std::uint32_t deepest = 0;
+        for (std::uint32_t v = 1; v < vertices.size(); ++v) {
+            if (glm::dot(vertices[v], local) > glm::dot(vertices[deepest], local)) deepest = v;
+        }
+        int best = -1;
+        alignment = -std::numeric_limits<float>::max();
+        const std::vector<std::uint32_t>& indices = hull_->faceVertexIndices();
+        for (int f = 0; f < faceCount(); ++f) {
+            const HullFace& face = hull_->faces()[f];
+            const float d = glm::dot(face.normal, local);
+            if (d <= alignment) continue;
+            for (std::uint32_t i = 0; i < face.vertexCount; ++i) {
+                if (indices[face.firstIndex + i] == deepest) {
+                    alignment = d;
+                    best = f;
+                    break;
+                }
+            }
+        }
+        return best >= 0 ? best : mostAlignedFace(t, -referenceNormal, alignment);
+    }
+
+private:
+    const ConvexHull* hull_ = nullptr;
+    Vec3 halfExtents_{0.0f};
+    bool valid_ = true;
+};
+
+struct FaceQuery {
+    float separation = -std::numeric_limits<float>::max();
+    int face = -1;
+};
+
+// Largest separation of `other` from the face planes of `reference` (both in reference's frame).
+FaceQuery queryFaces(const Polyhedron& reference, const Polyhedron& other, const Transform& otherToReference) {
+    FaceQuery query;
+    for (int f = 0; f < reference.faceCount(); ++f) {
+        const Vec3 n = reference.faceNormal(f);
+        const Vec3 deepest = otherToReference.apply(other.support(otherToReference.rotateInverse(-n)));
+        const float separation = glm::dot(n, deepest) - reference.faceOffset(f);
+        if (separation > query.separation) query = {separation, f};
+    }
+    return query;
+}
+
+struct EdgeQuery {
+    float separation = -std::numeric_limits<float>::max();
+    int edgeA = -1;
+    int edgeB = -1;
+    Vec3 normal{0.0f};  // A's frame, from A to B
+};
+
+// Do arcs AB and CD of the Gauss map cross? Then the edges with those face normals form a face of
+// the Minkowski difference and their cross product is a candidate axis (Gregorius, GDC 2013).
+bool isMinkowskiFace(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+    const Vec3 bxa = glm::cross(b, a);
+    const Vec3 dxc = glm::cross(d, c);
+    const float cba = glm::dot(c, bxa);
+    const float dba = glm::dot(d, bxa);
+    const float adc = glm::dot(a, dxc);
+    const float bdc = glm::dot(b, dxc);
+    return cba * dba < 0.0f && adc * bdc < 0.0f && cba * bdc > 0.0f;
+}
+
+// Edge pairs of A and B, in A's frame. For two boxes this is the classic set of nine edge-cross
+// axes, each tested at the pair of edges that actually supports it.
+EdgeQuery queryEdges(const Polyhedron& a, const Polyhedron& b, const Transform& bToA) {
+    EdgeQuery query;
+    const Vec3 centreA = a.centroid();
+    for (int eb = 0; eb < b.edgeCount(); ++eb) {
+        Vec3 q0, q1;
+        int fb0, fb1;
+        b.edge(eb, q0, q1, fb0, fb1);
+        q0 = bToA.apply(q0);
+        q1 = bToA.apply(q1);
+        const Vec3 edgeB = q1 - q0;
+        // Minkowski difference A - B: B's Gauss map is negated.
+        const Vec3 c = -bToA.rotate(b.faceNormal(fb0));
+        const Vec3 d = -bToA.rotate(b.faceNormal(fb1));
+        for (int ea = 0; ea < a.edgeCount(); ++ea) {
+            Vec3 p0, p1;
+            int fa0, fa1;
+            a.edge(ea, p0, p1, fa0, fa1);
+            if (!isMinkowskiFace(a.faceNormal(fa0), a.faceNormal(fa1), c, d)) continue;
+            const Vec3 edgeA = p1 - p0;
+            Vec3 axis = glm::cross(edgeA, edgeB);
+            const float axisLength = glm::length(axis);
+            // Nearly parallel edges: their faces give the same axis better.
+            if (axisLength < 0.005f * std::sqrt(lengthSquared(edgeA) * lengthSquared(edgeB))) continue;
+            axis /= axisLength;
+            if (glm::dot(axis, p0 - centreA) < 0.0f) axis = -axis;
+            const float separation = glm::dot(axis, q0 - p0);
+            if (separation > query.separation) query = {separation, ea, eb, axis};
+        }
+    }
+    return query;
+}
+
+struct ClipVertex {
+    Vec3 point{0.0f};
+    std::uint32_t id = 0;  // low byte: incident vertex; next byte: 1 + clip edge that made it
+};
+using ClipPolygon = std::array<ClipVertex, kMaxClipVertices>;
+
+// World plane of one face and the side planes through its edges (pointing out of the face).
+struct ReferenceFace {
+    Vec3 normal{0.0f};
+    float offset = 0.0f;
+    std::array<Vec3, kMaxClipVertices> sideNormals{};
+    std::array<float, kMaxClipVertices> sideOffsets{};
+    int sideCount = 0;
+};
+
+ReferenceFace referenceFace(const Polyhedron& poly, const Transform& t, int face) {
+    ReferenceFace ref;
+    ref.normal = t.rotate(poly.faceNormal(face));
+    ref.offset = poly.faceOffset(face) + glm::dot(ref.normal, t.position);
+    const int n = std::min(poly.faceVertexCount(face), kMaxClipVertices);
+    for (int i = 0; i < n; ++i) {
+        const Vec3 v0 = t.apply(poly.faceVertex(face, i));
+        const Vec3 v1 = t.apply(poly.faceVertex(face, (i + 1) % n));
+        const Vec3 side = glm::cross(v1 - v0, ref.normal);
+        const float length = glm::length(side);
+        if (length <= 1e-9f) continue;
+        ref.sideNormals[ref.sideCount] = side / length;
+        ref.sideOffsets[ref.sideCount] = glm::dot(side / length, v0);
+        ++ref.sideCount;
+    }
+    return ref;
+}
+
+// Sutherland-Hodgman: clips `polygon` (any orientation) to the prism over the reference face.
+int clipToSides(const ReferenceFace& ref, ClipPolygon& polygon, int count) {
+    ClipPolygon scratch;
+    ClipPolygon* in = &polygon;
+    ClipPolygon* out = &scratch;
+    for (int s = 0; s < ref.sideCount && count > 0; ++s) {
+        int outCount = 0;
+        for (int i = 0; i < count; ++i) {
+            const ClipVertex& current = (*in)[i];
+            const ClipVertex& next = (*in)[(i + 1) % count];
+            const float dc = glm::dot(ref.sideNormals[s], current.point) - ref.sideOffsets[s];
+            const float dn = glm::dot(ref.sideNormals[s], next.point) - ref.sideOffsets[s];
+            if (dc <= 0.0f && outCount < kMaxClipVertices) (*out)[outCount++] = current;
+            if (((dc < 0.0f && dn > 0.0f) || (dc > 0.0f && dn < 0.0f)) && outCount < kMaxClipVertices) {
+                const float t = dc / (dc - dn);
+                (*out)[outCount++] = {current.point + t * (next.point - current.point),
+                                      (std::uint32_t(s + 1) << 8) | (current.id & 0xFFu)};
+            }
+        }
+        std::swap(in, out);
+        count = outCount;
+    }
+    if (in != &polygon) std::copy(in->begin(), in->begin() + count, polygon.begin());
+    return count;
+}
+
+// Clips segment p0-p1 to the prism over the reference face; false when nothing is left.
+bool clipSegmentToSides(const ReferenceFace& ref, Vec3& p0, Vec3& p1) {
+    float t0 = 0.0f;
+    float t1 = 1.0f;
+    const Vec3 start = p0;
+    const Vec3 delta = p1 - p0;
+    for (int s = 0; s < ref.sideCount; ++s) {
+        const float d0 = glm::dot(ref.sideNormals[s], start) - ref.sideOffsets[s];
+        const float d1 = glm::dot(ref.sideNormals[s], start + delta) - ref.sideOffsets[s];
+        if (d0 > 0.0f && d1 > 0.0f) return false;
+        if (d0 > 0.0f) t0 = std::max(t0, d0 / (d0 - d1));
+        if (d1 > 0.0f) t1 = std::min(t1, d0 / (d0 - d1));
+    }
+    if (t0 > t1) return false;
+    p0 = start + t0 * delta;
+    p1 = start + t1 * delta;
+    return true;
+}
+
+// Turns clipped incident core points (inflated by `incidentRadius`) into contacts against the
+// reference plane; the reference shape is A when `referenceIsA`.
+void addFaceContacts(const ReferenceFace& ref, const ClipVertex* points, int count, float incidentRadius,
+                     bool referenceIsA, std::uint32_t idBase, float spec, Contacts& contacts) {
+    contacts.normal = referenceIsA ? ref.normal : -ref.normal;
+    for (int i = 0; i < count; ++i) {
+        const Vec3& p = points[i].point;
+        const float height = glm::dot(ref.normal, p) - ref.offset;
+        const float separation = height - incidentRadius;
+        if (separation > spec) continue;
+        const Vec3 onReference = p - height * ref.normal;
+        const Vec3 onIncident = p - incidentRadius * ref.normal;
+        const std::uint32_t id = idBase | points[i].id;
+        if (referenceIsA) {
+            contacts.add(onReference, onIncident, separation, id);
+        } else {
+            contacts.add(onIncident, onReference, separation, id);
+        }
+    }
+}
+
+// One point from GJK/EPA: the deepest (or closest) pair of points.
+void collideGeneric(const Shape& a, const Transform& ta, const Shape& b, const Transform& tb, float spec,
+                    Contacts& contacts) {
+    const ContactQuery query = penetrationOrDistance(a, ta, b, tb);
+    const float separation = query.signedDistance();
+    if (!(separation <= spec) || !isFinite(query.normal) || !isFinite(query.pointA) || !isFinite(query.pointB)) return;
+    const float length = glm::length(query.normal);
+    if (length <= 0.0f) return;
+    contacts.normal = query.normal / length;
+    contacts.add(query.pointA, query.pointB, separation, 0);
+}
+
+void collidePolyhedra(const Shape& a, const Transform& ta, const Shape& b, const Transform& tb, float spec,
+                      Contacts& contacts) {
+    const Polyhedron polyA(a);
+    const Polyhedron polyB(b);
+    if (!polyA.valid() || !polyB.valid()) return collideGeneric(a, ta, b, tb, spec, contacts);
+
+    const Transform bToA = relativeTransform(ta, tb);
+    const FaceQuery faceA = queryFaces(polyA, polyB, bToA);
+    if (faceA.separation > spec) return;
+    const FaceQuery faceB = queryFaces(polyB, polyA, relativeTransform(tb, ta));
+    if (faceB.separation > spec) return;
+    const EdgeQuery edges = queryEdges(polyA, polyB, bToA);
+    if (edges.separation > spec) return;
+
+    const float bestFace = std::max(faceA.separation, faceB.separation);
+    const bool edgeWins = edges.edgeA >= 0 &&
+        edges.separation > bestFace + kEdgeRelativeTolerance * std::abs(bestFace) + kEdgeAbsoluteTolerance;
+    if (edgeWins) {
+        Vec3 p0, p1, q0, q1;
+        int unused0, unused1;
+        polyA.edge(edges.edgeA, p0, p1, unused0, unused1);
+        polyB.edge(edges.edgeB, q0, q1, unused0, unused1);
+        Vec3 onA, onB;
+        closestPointsOfSegments(ta.apply(p0), ta.apply(p1), tb.apply(q0), tb.apply(q1), onA, onB);
+        contacts.normal = ta.rotate(edges.normal);
+        const float separation = glm::dot(onB - onA, contacts.normal);
+        if (separation <= spec) {
+            contacts.add(onA, onB, separation,
+                         0x40000000u | (std::uint32_t(edges.edgeA & 0xFFF) << 12) | std::uint32_t(edges.edgeB & 0xFFF));
+        }
+        return;
+    }
+
+    const bool referenceIsA =
+        !(faceB.separation > faceA.separation + kFaceRelativeTolerance * std::abs(faceA.separation) + kFaceAbsoluteTolerance);
+    const Polyhedron& refPoly = referenceIsA ? polyA : polyB;
+    const Polyhedron& incPoly = referenceIsA ? polyB : polyA;
+    const Transform& refT = referenceIsA ? ta : tb;
+    const Transform& incT = referenceIsA ? tb : ta;
+    const int refFaceIndex = referenceIsA ? faceA.face : faceB.face;
+
+    const ReferenceFace ref = referenceFace(refPoly, refT, refFaceIndex);
+    const int incFace = incPoly.incidentFace(incT, ref.normal);
+
+    ClipPolygon polygon;
+    const int incCount = std::min(incPoly.faceVertexCount(incFace), kMaxClipVertices);
+    for (int i = 0; i < incCount; ++i) polygon[i] = {incT.apply(incPoly.faceVertex(incFace, i)), std::uint32_t(i)};
+    const int clipped = clipToSides(ref, polygon, incCount);
+
+    const std::uint32_t idBase = (referenceIsA ? 0u : 0x80000000u) | (std::uint32_t(refFaceIndex & 0x7F) << 24) |
+                                 (std::uint32_t(incFace & 0xFF) << 16);
+    addFaceContacts(ref, polygon.data(), clipped, 0.0f, referenceIsA, idBase, spec, contacts);
+    // Clipping can lose everything when the pair only touches at a rim; GJK/EPA still has a point.
+    // (In deep penetration the deepest incident vertex may lie outside the reference face and be
+    // clipped away: the manifold is then shallower than the true depth, as with any face clipper.)
+    if (contacts.count == 0) collideGeneric(a, ta, b, tb, spec, contacts);
+}
+
+// A line feature (capsule segment, cylinder side) lying flat on a face of polyhedron A gives two
+// points; false when the configuration does not apply.
+// `contacts` holds the GJK/EPA point; the two points replace it only if they are as deep.
+bool addSegmentOnFace(const Polyhedron& poly, const Transform& ta, const Vec3& normal, Vec3 p0, Vec3 p1,
+                      float radius, float spec, Contacts& contacts) {
+    float alignment;
+    const int face = poly.mostAlignedFace(ta, normal, alignment);
+    if (alignment < kFaceAlignment) return false;
+    const ReferenceFace ref = referenceFace(poly, ta, face);
+    const float length = glm::length(p1 - p0);
+    if (length <= kLinearSlop || std::abs(glm::dot(p1 - p0, ref.normal)) > kLineParallel * length) return false;
+    if (!clipSegmentToSides(ref, p0, p1)) return false;
+    const std::array<ClipVertex, 2> ends{ClipVertex{p0, 0}, ClipVertex{p1, 1}};
+    Contacts lineContacts;
+    addFaceContacts(ref, ends.data(), 2, radius, true, std::uint32_t(face & 0xFF) << 16, spec, lineContacts);
+    if (lineContacts.count == 0 || lineContacts.deepestSeparation() > contacts.deepestSeparation() + kLinearSlop) {
+        return false;
+    }
+    contacts = lineContacts;
+    return true;
+}
+
+// Box or hull (A) and capsule (B).
+void collidePolyhedronCapsule(const Shape& a, const Transform& ta, const Shape& b, const Transform& tb, float spec,
+                              Contacts& contacts) {
+    collideGeneric(a, ta, b, tb, spec, contacts);
+    const Polyhedron poly(a);
+    if (contacts.count == 0 || !poly.valid()) return;
+    const Segment segment = capsuleSegment(b, tb);
+    addSegmentOnFace(poly, ta, contacts.normal, segment.p0, segment.p1, b.radius, spec, contacts);
+}
+
+// Box or hull (A) and cylinder (B). GJK/EPA finds the normal; a cap resting flat on a face is then
+// an 8-gon on the rim clipped against the face (the rim points lie on the true surface, so their
+// separations are exact), and a cylinder lying on its side contributes its lowest side line.
+void collidePolyhedronCylinder(const Shape& a, const Transform& ta, const Shape& b, const Transform& tb, float spec,
+                               Contacts& contacts) {
+    collideGeneric(a, ta, b, tb, spec, contacts);
+    const Polyhedron poly(a);
+    if (contacts.count == 0 || !poly.valid()) return;
+    const Vec3 n = contacts.normal;
+    const Vec3 axis = tb.rotate(Vec3(0.0f, 1.0f, 0.0f));
+    const float axisAlongNormal = glm::dot(axis, n);
+
+    if (std::abs(axisAlongNormal) >= kFaceAlignment) {
+        float alignment;
+        const int face = poly.mostAlignedFace(ta, n, alignment);
+        if (alignment < kFaceAlignment) return;
+        const ReferenceFace ref = referenceFace(poly, ta, face);
+        // The cap facing A is the one whose outward axis points against n.
+        const float capY = axisAlongNormal > 0.0f ? -b.halfHeight : b.halfHeight;
+        ClipPolygon polygon;
+        for (int i = 0; i < kCylinderCapPoints; ++i) {
+            const float angle = 2.0f * kPi * float(i) / float(kCylinderCapPoints);
+            polygon[i] = {tb.apply(Vec3(b.radius * std::cos(angle), capY, b.radius * std::sin(angle))), std::uint32_t(i)};
+        }
+        const int clipped = clipToSides(ref, polygon, kCylinderCapPoints);
+        Contacts capContacts;
+        addFaceContacts(ref, polygon.data(), clipped, 0.0f, true, std::uint32_t(face & 0xFF) << 16, spec, capContacts);
+        if (capContacts.count > 0 && capContacts.deepestSeparation() <= contacts.deepestSeparation() + kLinearSlop) {
+            contacts = capContacts;
+        }
+    } else if (std::abs(axisAlongNormal) <= kLineParallel) {
+        const Vec3 towardA = glm::normalize(-n + axisAlongNormal * axis);
+        const Vec3 p0 = tb.apply(Vec3(0.0f, -b.halfHeight, 0.0f)) + b.radius * towardA;
+        const Vec3 p1 = tb.apply(Vec3(0.0f, b.halfHeight, 0.0f)) + b.radius * towardA;
+        addSegmentOnFace(poly, ta, n, p0, p1, 0.0f, spec, contacts);
+    }
+}
+
+// ---- Dispatch -------------------------------------------------------------------------------------
+
+using Routine = void (*)(const Shape&, const Transform&, const Shape&, const Transform&, float, Contacts&);
+
+struct Dispatch {
+    Routine routine;
+    bool swapped;  // the routine expects (B, A)
+};
+
+// Rows: A's type, columns: B's type, in ShapeType order (sphere, box, capsule, cylinder, hull).
+constexpr Dispatch kDispatch[kShapeTypeCount][kShapeTypeCount] = {
+    {{collideSphereSphere, false}, {collideBoxSphere, true}, {collideSphereCapsule, false},
+     {collideGeneric, false}, {collideGeneric, false}},
+    {{collideBoxSphere, false}, {collidePolyhedra, false}, {collidePolyhedronCapsule, false},
+     {collidePolyhedronCylinder, false}, {collidePolyhedra, false}},
+    {{collideSphereCapsule, true}, {collidePolyhedronCapsule, true}, {collideCapsuleCapsule, false},
+     {collideGeneric, false}, {collidePolyhedronCapsule, true}},
+    {{collideGeneric, false}, {collidePolyhedronCylinder, true}, {collideGeneric, false},
+     {collideGeneric, false}, {collidePolyhedronCylinder, true}},
+    {{collideGeneric, false}, {collidePolyhedra, false}, {collidePolyhedronCapsule, false},
+     {collidePolyhedronCylinder, false}, {collidePolyhedra, false}},
+};
+
+}  // namespace
+
+bool collideShapes(const Shape& a, const Transform& ta, const Shape& b, const Transform& tb,
+                   float speculativeDistance, ContactManifold& out) {
+    out = ContactManifold{};
+    const int rowA = int(a.type);
+    const int columnB = int(b.type);
+    if (rowA < 0 || rowA >= kShapeTypeCount || columnB < 0 || columnB >= kShapeTypeCount) return false;
+
+    const Dispatch& entry = kDispatch[rowA][columnB];
+    Contacts contacts;
+    if (entry.swapped) {
+        entry.routine(b, tb, a, ta, speculativeDistance, contacts);
+        contacts.normal = -contacts.normal;
+        for (int i = 0; i < contacts.count; ++i) std::swap(contacts.items[i].pointA, contacts.items[i].pointB);
+    } else {
+        entry.routine(a, ta, b, tb, speculativeDistance, contacts);
+    }
+    reduceToManifold(contacts, out);
+    return out.pointCount > 0;
+}
+
+}  // namespace simcore

@@ -1,0 +1,31 @@
+#pragma once
+// Narrow phase: contact manifolds for one pair of placed shapes.
+//
+// A dispatch table over (ShapeType, ShapeType) picks a routine per pair; pairs with only the
+// reverse routine run swapped and have their normal and points flipped back.
+//   - sphere, capsule among themselves: closest points of the cores (point / segment), closed form;
+//     parallel capsules give two points over the overlap of their segments.
+//   - box-sphere: closest point on the box, or the nearest face when the centre is inside.
+//   - box/hull among themselves: SAT (faces of both, edge pairs pruned by the Gauss-map test), then
+//     reference/incident face clipping, or one edge-edge point.
+//   - box/hull with capsule: GJK/EPA for the normal, plus the capsule segment clipped against the
+//     face when the capsule lies flat on it (two points).
+//   - box/hull with cylinder: GJK/EPA, plus an 8-point cap polygon (cap flat on a face) or the side
+//     line (cylinder lying on a face) clipped against the face.
+//   - everything else (sphere-cylinder, sphere-hull, cylinder-capsule, cylinder-cylinder): one point
+//     from GJK/EPA.
+// Manifolds with more than four candidates are reduced to the four spanning the largest area.
+
+#include "simcore/collision/contact_manifold.h"
+#include "simcore/math/math.h"
+#include "simcore/shapes/shape.h"
+
+namespace simcore {
+
+// Fills `out` with the contact points of A and B whose separation is <= speculativeDistance
+// (normal unit, from A to B; at most kMaxManifoldPoints) and returns true when there is at least
+// one. `out` is reset on every call. Allocates nothing.
+bool collideShapes(const Shape& a, const Transform& ta, const Shape& b, const Transform& tb,
+                   float speculativeDistance, ContactManifold& out);
+
+}  // namespace simcore
