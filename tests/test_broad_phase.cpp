@@ -16,6 +16,7 @@
 #include <new>
 #include <random>
 #include <set>
+#include <unordered_map>
 #include <vector>
 
 // ---- Allocation counting -------------------------------------------------------------------------
@@ -149,8 +150,9 @@ struct Scene {
     Proxy& add(bool active) {
         Proxy p;
         p.tight = randomBox(rng, half, proxies);
-        // Unique per proxy, and deliberately not in proxy-id order, so sorting by userData is tested.
-        p.userData = (nextUserData++ * 2654435761u) >> 8;
+        // Unique per proxy (odd multipliers permute 32-bit integers) and not in proxy-id order, so
+        // the sorting by userData is tested.
+        p.userData = nextUserData++ * 2654435761u;
         p.active = active;
         p.id = broadPhase.addProxy(p.tight, p.userData, p.active);
         proxies.push_back(p);
@@ -308,11 +310,11 @@ void TestBroadPhase::pairsStayExactThroughMovesDestroysAndCreates() {
         QVERIFY(updated == movedExpected);
 
         // The contact manager's side: drop pairs that ended (a body gone, boxes apart, both inactive).
+        std::unordered_map<std::uint32_t, const Proxy*> byUserData;
+        for (const Proxy& p : scene.proxies) byUserData[p.userData] = &p;
         const auto find = [&](std::uint32_t userData) -> const Proxy* {
-            for (const Proxy& p : scene.proxies) {
-                if (p.userData == userData) return &p;
-            }
-            return nullptr;
+            const auto it = byUserData.find(userData);
+            return it == byUserData.end() ? nullptr : it->second;
         };
         for (auto it = persistent.begin(); it != persistent.end();) {
             const Proxy* a = find(it->a);

@@ -17,10 +17,33 @@
 #include <QtTest>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
+#include <new>
 #include <random>
 #include <vector>
+
+// ---- Allocation counting ------------------------------------------------------------------------
+
+namespace {
+std::atomic<bool> gCountAllocations{false};
+std::atomic<std::size_t> gAllocations{0};
+
+void* allocate(std::size_t size) {
+    if (gCountAllocations.load(std::memory_order_relaxed)) gAllocations.fetch_add(1, std::memory_order_relaxed);
+    if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
+    throw std::bad_alloc();
+}
+}  // namespace
+
+void* operator new(std::size_t size) { return allocate(size); }
+void* operator new[](std::size_t size) { return allocate(size); }
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
 
 using namespace simcore;
 
@@ -124,8 +147,7 @@ std::vector<Case> makeCases() {
     const Shape unitHull = Shape::convexHull(boxHull(Vec3(0.5f)));
     const Shape groundHull = Shape::convexHull(boxHull(Vec3(2.0f, 0.5f, 2.0f)));
     const Shape ball = Shape::sphere(0.5f);
-    const Shape origin = Shape::sphere(0.5f);
-    const Shape lyingCapsule = Shape::capsule(0.25f, 0.5f);
+        const Shape lyingCapsule = Shape::capsule(0.25f, 0.5f);
     const Shape longCapsule = Shape::capsule(0.2f, 1.0f);
     const Shape cylinder = Shape::cylinder(0.5f, 0.5f);
     const Transform at0 = place(Vec3(0.0f));
@@ -168,13 +190,13 @@ std::vector<Case> makeCases() {
                      glm::normalize(Vec3(1, 1, 1)), -0.01f, true, {{1, 0.5f, 1}}});
     cases.push_back({"sphere centre inside box", smallGround, at0, ball, place(Vec3(0.8f, 0.2f, 0)), 0.02f, 1, 1,
                      true, Vec3(1, 0, 0), -0.7f, true, {{1, 0.2f, 0}}});
-    cases.push_back({"sphere-sphere overlap", origin, at0, Shape::sphere(0.3f), place(Vec3(0.7f, 0, 0)), 0.02f, 1, 1,
+    cases.push_back({"sphere-sphere overlap", ball, at0, Shape::sphere(0.3f), place(Vec3(0.7f, 0, 0)), 0.02f, 1, 1,
                      true, Vec3(1, 0, 0), -0.1f, true, {{0.5f, 0, 0}}});
-    cases.push_back({"sphere-sphere speculative gap", origin, at0, Shape::sphere(0.3f), place(Vec3(0.85f, 0, 0)), 0.1f,
+    cases.push_back({"sphere-sphere speculative gap", ball, at0, Shape::sphere(0.3f), place(Vec3(0.85f, 0, 0)), 0.1f,
                      1, 1, true, Vec3(1, 0, 0), 0.05f, true, {{0.5f, 0, 0}}});
-    cases.push_back({"sphere-sphere beyond speculative", origin, at0, Shape::sphere(0.3f), place(Vec3(1.0f, 0, 0)),
+    cases.push_back({"sphere-sphere beyond speculative", ball, at0, Shape::sphere(0.3f), place(Vec3(1.0f, 0, 0)),
                      0.1f, 0, 0});
-    cases.push_back({"coincident spheres", origin, at0, origin, at0, 0.02f, 1, 1, false, Vec3(0), -1.0f, true});
+    cases.push_back({"coincident spheres", ball, at0, ball, at0, 0.02f, 1, 1, false, Vec3(0), -1.0f, true});
     // Capsules.
     cases.push_back({"capsule lying on box", ground, at0, lyingCapsule, place(Vec3(0, 0.74f, 0), alongX), 0.02f, 2, 2,
                      true, Vec3(0, 1, 0), -0.01f, true, {{-0.5f, 0.5f, 0}, {0.5f, 0.5f, 0}}});
@@ -206,6 +228,8 @@ std::vector<Case> makeCases() {
                      true, Vec3(0, 1, 0), -0.01f, true, {}, 0.45f});
     cases.push_back({"cylinder lying on box", ground, at0, cylinder, place(Vec3(0, 0.99f, 0), alongX), 0.02f, 2, 2,
                      true, Vec3(0, 1, 0), -0.01f, true, {{-0.5f, 0.5f, 0}, {0.5f, 0.5f, 0}}});
+    cases.push_back({"cylinder standing on cylinder", cylinder, at0, Shape::cylinder(0.3f, 0.2f),
+                     place(Vec3(0.1f, 0.69f, 0)), 0.02f, 3, 4, true, Vec3(0, 1, 0), -0.01f, true, {}, 0.15f});
     cases.push_back({"sphere on cylinder", cylinder, at0, ball, place(Vec3(0, 0.99f, 0)), 0.02f, 1, 1, true,
                      Vec3(0, 1, 0), -0.01f, true, {{0, 0.5f, 0}}});
     return cases;
@@ -384,6 +408,19 @@ private slots:
         std::sort(idsAfter.begin(), idsAfter.end());
         QVERIFY(idsBefore == idsAfter);
         QVERIFY(std::adjacent_find(idsBefore.begin(), idsBefore.end()) == idsBefore.end());  // distinct
+    }
+
+    // The narrow phase runs for every pair every step: it must not touch the heap.
+    void noHeapAllocation() {
+        gAllocations = 0;
+        gCountAllocations = true;
+        for (const Case& c : cases()) {
+            ContactManifold m;
+            collideShapes(c.a, c.ta, c.b, c.tb, c.speculative, m);
+            collideShapes(c.b, c.tb, c.a, c.ta, c.speculative, m);
+        }
+        gCountAllocations = false;
+        QCOMPARE(gAllocations.load(), std::size_t(0));
     }
 
     // The whole scene moved by a rigid transform gives the same manifold, moved.

@@ -729,6 +729,51 @@ void collidePolyhedronCylinder(const Shape& a, const Transform& ta, const Shape&
     }
 }
 
+// Two cylinders stacked cap on cap: A's cap (a 16-gon on the rim) is the reference face and B's
+// cap (an 8-gon) is clipped against it. Otherwise, one GJK/EPA point.
+void collideCylinderCylinder(const Shape& a, const Transform& ta, const Shape& b, const Transform& tb, float spec,
+                             Contacts& contacts) {
+    collideGeneric(a, ta, b, tb, spec, contacts);
+    if (contacts.count == 0) return;
+    const Vec3 n = contacts.normal;
+    const Vec3 axisA = ta.rotate(Vec3(0.0f, 1.0f, 0.0f));
+    const Vec3 axisB = tb.rotate(Vec3(0.0f, 1.0f, 0.0f));
+    const float alongA = glm::dot(axisA, n);
+    const float alongB = glm::dot(axisB, n);
+    if (std::abs(alongA) < kFaceAlignment || std::abs(alongB) < kFaceAlignment) return;
+
+    constexpr int kReferenceRimPoints = 16;
+    const float capA = alongA > 0.0f ? a.halfHeight : -a.halfHeight;  // A's cap facing B
+    const float capB = alongB > 0.0f ? -b.halfHeight : b.halfHeight;  // B's cap facing A
+    const Vec3 capCentreA = ta.apply(Vec3(0.0f, capA, 0.0f));
+    ReferenceFace ref;
+    ref.normal = alongA > 0.0f ? axisA : -axisA;
+    ref.offset = glm::dot(ref.normal, capCentreA);
+    const auto rimA = [&](int i) {
+        const float angle = 2.0f * kPi * float(i % kReferenceRimPoints) / float(kReferenceRimPoints);
+        return ta.apply(Vec3(a.radius * std::cos(angle), capA, a.radius * std::sin(angle)));
+    };
+    for (int i = 0; i < kReferenceRimPoints && a.radius > 0.0f; ++i) {
+        const Vec3 v0 = rimA(i);
+        Vec3 side = glm::normalize(glm::cross(rimA(i + 1) - v0, ref.normal));
+        if (glm::dot(side, capCentreA - v0) > 0.0f) side = -side;  // point out of the cap
+        ref.sideNormals[ref.sideCount] = side;
+        ref.sideOffsets[ref.sideCount] = glm::dot(side, v0);
+        ++ref.sideCount;
+    }
+    ClipPolygon polygon;
+    for (int i = 0; i < kCylinderCapPoints; ++i) {
+        const float angle = 2.0f * kPi * float(i) / float(kCylinderCapPoints);
+        polygon[i] = {tb.apply(Vec3(b.radius * std::cos(angle), capB, b.radius * std::sin(angle))), std::uint32_t(i)};
+    }
+    const int clipped = clipToSides(ref, polygon, kCylinderCapPoints);
+    Contacts capContacts;
+    addFaceContacts(ref, polygon.data(), clipped, 0.0f, true, 0x00010000u, spec, capContacts);
+    if (capContacts.count > 0 && capContacts.deepestSeparation() <= contacts.deepestSeparation() + kLinearSlop) {
+        contacts = capContacts;
+    }
+}
+
 // ---- Dispatch -------------------------------------------------------------------------------------
 
 using Routine = void (*)(const Shape&, const Transform&, const Shape&, const Transform&, float, Contacts&);
@@ -747,7 +792,7 @@ constexpr Dispatch kDispatch[kShapeTypeCount][kShapeTypeCount] = {
     {{collideSphereCapsule, true}, {collidePolyhedronCapsule, true}, {collideCapsuleCapsule, false},
      {collideGeneric, false}, {collidePolyhedronCapsule, true}},
     {{collideGeneric, false}, {collidePolyhedronCylinder, true}, {collideGeneric, false},
-     {collideGeneric, false}, {collidePolyhedronCylinder, true}},
+     {collideCylinderCylinder, false}, {collidePolyhedronCylinder, true}},
     {{collideGeneric, false}, {collidePolyhedra, false}, {collidePolyhedronCapsule, false},
      {collidePolyhedronCylinder, false}, {collidePolyhedra, false}},
 };

@@ -12,8 +12,8 @@
 //     face when the capsule lies flat on it (two points).
 //   - box/hull with cylinder: GJK/EPA, plus an 8-point cap polygon (cap flat on a face) or the side
 //     line (cylinder lying on a face) clipped against the face.
-//   - everything else (sphere-cylinder, sphere-hull, cylinder-capsule, cylinder-cylinder): one point
-//     from GJK/EPA.
+//   - cylinder-cylinder: GJK/EPA, plus cap-on-cap clipping (B's 8-gon against A's 16-gon cap).
+//   - everything else (sphere-cylinder, sphere-hull, cylinder-capsule): one point from GJK/EPA.
 // Manifolds with more than four candidates are reduced to the four spanning the largest area.
 
 #include "simcore/collision/contact_manifold.h"

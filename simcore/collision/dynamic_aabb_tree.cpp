@@ -221,8 +221,8 @@ void DynamicAabbTree::refitAndRotateUpFrom(std::uint32_t index) {
     while (index != kNull) {
         // A rotation moves a subtree down into its sibling. Follow it while rotations keep paying
         // off there, so it sinks to where it belongs instead of resting on top of a large subtree
-        // it happens to lie inside (which builds chains that cost nothing in area at the top but
-        // lengthen every walk through them). Each step goes one level down, so this ends.
+        // it happens to lie inside: small leaves resting there pile up into chains of nodes as
+        // large as that subtree. Each step goes one level down, so this ends.
         std::uint32_t deepest = kNull;
         for (std::uint32_t receiver = rotate(index); receiver != kNull; receiver = rotate(receiver)) {
             deepest = receiver;

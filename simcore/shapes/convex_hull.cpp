@@ -128,27 +128,44 @@ private:
         nearPoints_.push_back({point, nearestTriangle});
     }
 
+    // The triangle the point is highest above, searched from `start` across neighbours the point
+    // is at most the tolerance lower above than the best so far. Coplanar neighbours are level,
+    // so the search crosses flat regions instead of stalling on them. Stops early once the point
+    // is clearly outside.
+    int highestTriangleNear(int p, int start) {
+        ++stamp_;
+        int best = start;
+        double bestHeight = height(start, p);
+        std::vector<int> stack{start};
+        triangles_[start].visitStamp = stamp_;
+        while (!stack.empty() && bestHeight <= eps_) {
+            const int t = stack.back();
+            stack.pop_back();
+            for (int g : triangles_[t].adjacent) {
+                if (triangles_[g].visitStamp == stamp_) continue;
+                const double h = height(g, p);
+                if (h < bestHeight - eps_) continue;
+                triangles_[g].visitStamp = stamp_;
+                stack.push_back(g);
+                if (h > bestHeight) {
+                    bestHeight = h;
+                    best = g;
+                }
+            }
+        }
+        return best;
+    }
+
     // Re-checks points that were dropped just above some plane against the current hull; returns
     // whether any turned out to be outside (they are then queued for adding). The search starts at
-    // the triangle the point was nearest to, or whatever replaced it, and climbs to the neighbour
-    // the point is highest above.
+    // the triangle the point was nearest to, or whatever replaced it.
     bool reassignNearPoints(std::vector<int>& pending) {
         bool reassigned = false;
         std::vector<NearPoint> stillNear;
         for (auto [p, t] : nearPoints_) {
             while (!triangles_[t].alive) t = triangles_[t].replacedBy;
-            double h = height(t, p);
-            for (bool climbed = true; climbed;) {
-                climbed = false;
-                for (int g : triangles_[t].adjacent) {
-                    const double hg = height(g, p);
-                    if (hg > h) {
-                        h = hg;
-                        t = g;
-                        climbed = true;
-                    }
-                }
-            }
+            t = highestTriangleNear(p, t);
+            const double h = height(t, p);
             if (h > eps_) {
                 triangles_[t].outside.push_back(p);
                 pending.push_back(t);
