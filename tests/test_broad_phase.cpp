@@ -2,8 +2,9 @@
 // and coincident boxes included) and through random moves, teleports, destroys and creates, the
 // tree must report exactly the brute-force pairs, in the same order, and stay structurally valid.
 // Also: query and ray-cast results against brute force, tree height, filtering, fat-box rules, and
-// no heap allocation once the broad phase has warmed up (counted by a replaced operator new).
+// no heap allocation once the broad phase has warmed up (counted by tests/support/allocation_counter).
 
+#include "support/allocation_counter.h"
 #include "simcore/collision/broad_phase.h"
 #include "simcore/collision/dynamic_aabb_tree.h"
 
@@ -18,41 +19,6 @@
 #include <set>
 #include <unordered_map>
 #include <vector>
-
-// ---- Allocation counting -------------------------------------------------------------------------
-// Replaceable global allocation functions: count while gCountAllocations is set.
-
-namespace {
-std::atomic<bool> gCountAllocations{false};
-std::atomic<std::size_t> gAllocations{0};
-
-void* allocate(std::size_t size) {
-    if (gCountAllocations.load(std::memory_order_relaxed)) gAllocations.fetch_add(1, std::memory_order_relaxed);
-    if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-    throw std::bad_alloc();
-}
-
-void* allocateAligned(std::size_t size, std::align_val_t alignment) {
-    if (gCountAllocations.load(std::memory_order_relaxed)) gAllocations.fetch_add(1, std::memory_order_relaxed);
-    const auto align = static_cast<std::size_t>(alignment);
-    const std::size_t rounded = (std::max<std::size_t>(size, 1) + align - 1) / align * align;
-    if (void* p = std::aligned_alloc(align, rounded)) return p;
-    throw std::bad_alloc();
-}
-}  // namespace
-
-void* operator new(std::size_t size) { return allocate(size); }
-void* operator new[](std::size_t size) { return allocate(size); }
-void* operator new(std::size_t size, std::align_val_t alignment) { return allocateAligned(size, alignment); }
-void* operator new[](std::size_t size, std::align_val_t alignment) { return allocateAligned(size, alignment); }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
-void operator delete(void* p, std::align_val_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::align_val_t) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
 
 using namespace simcore;
 
@@ -610,11 +576,9 @@ void TestBroadPhase::steadyStateDoesNotAllocate() {
     pairs.reserve(2 * all.size());
     all.reserve(2 * all.size());
     reinserted = 0;
-    gAllocations = 0;
-    gCountAllocations = true;
+    test_support::startCountingAllocations();
     for (int i = 300; i < 600; ++i) step(i);
-    gCountAllocations = false;
-    const std::size_t allocations = gAllocations;
+    const std::size_t allocations = test_support::stopCountingAllocations();
 
     QCOMPARE(allocations, std::size_t{0});
     QVERIFY(reinserted > 1000);  // the measured steps did restructure the tree

@@ -8,6 +8,7 @@
 // the speculative distance, points on A's surface, nothing non-finite. Each row is also run with A
 // and B swapped: same points, same separations, flipped normal.
 
+#include "support/allocation_counter.h"
 #include "simcore/collision/collide_shapes.h"
 #include "simcore/shapes/convex_hull.h"
 #include "simcore/shapes/shape.h"
@@ -24,26 +25,6 @@
 #include <new>
 #include <random>
 #include <vector>
-
-// ---- Allocation counting ------------------------------------------------------------------------
-
-namespace {
-std::atomic<bool> gCountAllocations{false};
-std::atomic<std::size_t> gAllocations{0};
-
-void* allocate(std::size_t size) {
-    if (gCountAllocations.load(std::memory_order_relaxed)) gAllocations.fetch_add(1, std::memory_order_relaxed);
-    if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-    throw std::bad_alloc();
-}
-}  // namespace
-
-void* operator new(std::size_t size) { return allocate(size); }
-void* operator new[](std::size_t size) { return allocate(size); }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
 
 using namespace simcore;
 
@@ -412,15 +393,14 @@ private slots:
 
     // The narrow phase runs for every pair every step: it must not touch the heap.
     void noHeapAllocation() {
-        gAllocations = 0;
-        gCountAllocations = true;
+        test_support::startCountingAllocations();
         for (const Case& c : cases()) {
             ContactManifold m;
             collideShapes(c.a, c.ta, c.b, c.tb, c.speculative, m);
             collideShapes(c.b, c.tb, c.a, c.ta, c.speculative, m);
         }
-        gCountAllocations = false;
-        QCOMPARE(gAllocations.load(), std::size_t(0));
+        const std::size_t allocations = test_support::stopCountingAllocations();
+        QCOMPARE(allocations, std::size_t(0));
     }
 
     // The whole scene moved by a rigid transform gives the same manifold, moved.

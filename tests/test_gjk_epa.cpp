@@ -12,6 +12,7 @@
 //     by a little less does not.
 // Plus: warm-start cache, the boolean query, and no heap allocation in the queries.
 
+#include "support/allocation_counter.h"
 #include "simcore/collision/epa.h"
 #include "simcore/collision/gjk.h"
 #include "simcore/shapes/convex_hull.h"
@@ -26,26 +27,6 @@
 #include <new>
 #include <random>
 #include <vector>
-
-// ---- Allocation counting ------------------------------------------------------------------------
-
-namespace {
-std::atomic<bool> gCountAllocations{false};
-std::atomic<std::size_t> gAllocations{0};
-
-void* allocate(std::size_t size) {
-    if (gCountAllocations.load(std::memory_order_relaxed)) gAllocations.fetch_add(1, std::memory_order_relaxed);
-    if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-    throw std::bad_alloc();
-}
-}  // namespace
-
-void* operator new(std::size_t size) { return allocate(size); }
-void* operator new[](std::size_t size) { return allocate(size); }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
 
 using namespace simcore;
 
@@ -845,8 +826,7 @@ void TestGjkEpa::noHeapAllocation() {
     const Shape capsule = Shape::capsule(0.3f, 0.4f);
     const Transform ta = place({0, 0, 0}, rotation(20, {1, 0, 1}));
     GjkCache cache;
-    gAllocations = 0;
-    gCountAllocations = true;
+    test_support::startCountingAllocations();
     float sink = 0.0f;
     for (float x = -1.5f; x <= 1.5f; x += 0.05f) {
         const Transform tb = place({x, 0.3f, -0.1f}, rotation(40.0f * x, {0, 1, 1}));
@@ -856,9 +836,9 @@ void TestGjkEpa::noHeapAllocation() {
         sink += epaPenetration(box, ta, box, tb).depth;
         sink += gjkIntersect(capsule, ta, hull, tb) ? 1.0f : 0.0f;
     }
-    gCountAllocations = false;
+    const std::size_t allocations = test_support::stopCountingAllocations();
     QVERIFY(isFinite(sink));
-    QCOMPARE(gAllocations.load(), std::size_t(0));
+    QCOMPARE(allocations, std::size_t(0));
 }
 
 void TestGjkEpa::nonFiniteInputGivesFiniteResult() {

@@ -8,11 +8,12 @@
 //   of the tolerance: well above rounding error, so exactly coplanar triangles are consistently
 //   hidden, and well below the tolerance, so the hull stays convex to far better than it.
 // - Where the hull is (numerically) flat the visible region can be ill-formed: a cone triangle
-//   could fold back over a coplanar hidden neighbour, or the region could have a hole or two fans
-//   touching at a vertex. The region is then grown over the offending near-coplanar triangles
-//   until the cone over its horizon is well formed.
+//   could fold back over a hidden neighbour or be a sliver, or the region could have a hole or two
+//   fans touching at a vertex. The region is then grown over the offending hidden triangles until
+//   the cone over its horizon is well formed.
 // - Points dropped while lying just above some plane are re-checked against the finished hull, as
-//   later triangles can tilt past them; any found outside are added after all.
+//   later triangles can tilt past them (near sharp edges a point can be close to both planes yet
+//   well outside); any found outside are added after all.
 #include "simcore/shapes/convex_hull.h"
 
 #include <algorithm>
@@ -55,8 +56,7 @@ struct Triangle {
 
 struct HorizonEdge {
     int a = 0, b = 0;         // directed as in the visible triangle being removed
-    int inner = kNoTriangle;  // that visible triangle
-    int outer = kNoTriangle;  // the hidden triangle that stays
+    int outer = kNoTriangle;  // the hidden triangle beyond, which stays
 };
 
 double distanceToLine(const DVec3& p, const DVec3& a, const DVec3& b) {
@@ -323,7 +323,7 @@ private:
         for (int f : visibleSet) {
             for (int e = 0; e < 3; ++e) {
                 const int g = triangles_[f].adjacent[e];
-                if (!visible_[g]) horizon.push_back({triangles_[f].v[e], triangles_[f].v[(e + 1) % 3], f, g});
+                if (!visible_[g]) horizon.push_back({triangles_[f].v[e], triangles_[f].v[(e + 1) % 3], g});
             }
         }
         return horizon;
@@ -518,18 +518,17 @@ private:
     DVec3 interior_{0.0};  // centroid of the initial simplex, strictly inside the hull throughout
     int stamp_ = 0;
     int aliveCount_ = 0;
-    std::vector<char> visible_;   // per triangle, set only while a point is being added
+    std::vector<char> visible_;  // per triangle, set only while a point is being added
     struct NearPoint {
         int point;
         int triangle;  // the one it was highest above when dropped
     };
-    std::vector<NearPoint> nearPoints_; // dropped points that were within the tolerance above a plane
-    std::vector<char> isNear_;    // per point: listed in nearPoints_
+    std::vector<NearPoint> nearPoints_;  // dropped points that were within the tolerance above a plane
+    std::vector<char> isNear_;           // per point: listed in nearPoints_
 };
 
 // A polygon face as a loop of point indices, CCW from outside.
 using Polygon = std::vector<int>;
-
 
 // The boundary of a set of triangles as one loop (CCW from outside), or empty if the boundary is
 // not a single simple loop.
@@ -632,8 +631,9 @@ std::vector<Polygon> mergeCoplanarTriangles(const Quickhull& hull) {
 
 // A vertex shared by only two faces lies on their common edge line (convex faces cannot meet
 // otherwise), left there by merging. It is removed from both; when one of the two is a sliver
-// triangle, that triangle collapses onto the edge and disappears. Every remaining hull vertex is
-// then a real corner where at least three faces meet.
+// triangle, that triangle collapses onto the edge and disappears. Hull vertices are then corners
+// where at least three faces meet, except on hulls within a few tolerances of flat, whose rim can
+// be a knife edge between two faces.
 void removeDegreeTwoVertices(std::vector<Polygon>& polygons, const std::vector<DVec3>& points, double eps) {
     std::unordered_map<int, std::vector<int>> facesOfVertex;
     for (int f = 0; f < int(polygons.size()); ++f) {
@@ -789,11 +789,7 @@ ConvexHull::BuildResult ConvexHull::build(const std::vector<Vec3>& points) {
         if (twin == faceOfDirectedEdge.end()) return closeUpFailure();
         hull->edges_.push_back({a, b, face, twin->second});
     }
-    for (const auto& [key, face] : faceOfDirectedEdge) {
-        const auto a = std::uint32_t(key >> 32);
-        const auto b = std::uint32_t(key & 0xFFFFFFFFu);
-        if (a > b && !faceOfDirectedEdge.contains(edgeKey(b, a))) return closeUpFailure();
-    }
+    if (faceOfDirectedEdge.size() != 2 * hull->edges_.size()) return closeUpFailure();
     // Deterministic edge order regardless of hash-map iteration order.
     std::sort(hull->edges_.begin(), hull->edges_.end(),
               [](const HullEdge& x, const HullEdge& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; });

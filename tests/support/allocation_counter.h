@@ -1,0 +1,12 @@
+#pragma once
+// Counts heap allocations between start and stop, to prove that hot paths never allocate. A test
+// that links allocation_counter.cpp has every global operator new replaced by a counting one.
+
+#include <cstddef>
+
+namespace test_support {
+
+void startCountingAllocations();
+std::size_t stopCountingAllocations();  // allocations since the matching start
+
+}  // namespace test_support
