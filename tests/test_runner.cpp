@@ -26,7 +26,7 @@ RunResult runRunner(const QStringList& arguments) {
 // A sphere thrown from (0, 10, 0) at (2, 3, 0) m/s, alone in the world.
 const char* kProjectileScene = R"({
   "format": "interplay.scene", "version": 1,
-  "settings": { "gravity": [0, -9.81, 0], "timeStep": 0.01, "sleep": { "enabled": false } },
+  "settings": { "gravity": [0, -9.81, 0], "timeStep": 0.01, "substeps": 1, "sleep": { "enabled": false } },
   "bodies": [ { "name": "ball", "shape": { "type": "sphere", "radius": 0.25 },
                 "position": [0, 10, 0], "mass": 1.5, "linearVelocity": [2, 3, 0] } ],
   "joints": []

@@ -5,6 +5,7 @@
 
 #include "simcore/io/scene_io.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -102,8 +103,9 @@ int run(const runner::RunnerOptions& options) {
         world.step();
         summary.wallMs += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         ++summary.steps;
-        for (int stage = 0; stage < simcore::kStageCount; ++stage)
-            summary.stageMs[stage] += world.lastStepProfile().stageMs[stage];
+        const simcore::StepProfile& profile = world.lastStepProfile();
+        for (int stage = 0; stage < simcore::kStageCount; ++stage) summary.stageMs[stage] += profile.stageMs[stage];
+        summary.maxPenetration = std::max(summary.maxPenetration, profile.maxPenetration);
 
         if (auto bad = world.findNonFiniteBody()) {
             std::cerr << options.scenePath << ": error: body '" << bad->name << "' has a non-finite "

@@ -40,8 +40,7 @@ nlohmann::ordered_json makeReport(const simcore::World& world, const RunSummary&
     const double kinetic = world.kineticEnergy();
     const double potential = world.potentialEnergy();
     report["metrics"] = {
-        // No contact stage exists yet, so nothing can penetrate; the contact solver reports it.
-        {"maxPenetration", 0.0},
+        {"maxPenetration", summary.maxPenetration},
         {"kineticEnergy", kinetic},
         {"potentialEnergy", potential},
         {"totalEnergy", kinetic + potential},

@@ -18,6 +18,7 @@ struct RunSummary {
     double wallMs = 0.0;                                     // stepping loop only
     std::array<double, simcore::kStageCount> stageMs{};     // summed over all steps
     double initialEnergy = 0.0;                              // kinetic + potential before step 1 (J)
+    float maxPenetration = 0.0f;                             // deepest contact overlap seen in any step (m)
 };
 
 nlohmann::ordered_json makeReport(const simcore::World& world, const RunSummary& summary);

@@ -44,6 +44,7 @@ BodyId BodyStorage::add(const BodyCreationSettings& settings, const MassProperti
     awake.push_back(settings.motion == MotionType::Static ? 0 : 1);
     sleepTime.push_back(0.0f);
     name.push_back(settings.name);
+    proxy.push_back(0);
     refreshInverseInertiaWorld(dense);
 
     std::uint32_t slot;
@@ -70,7 +71,7 @@ void BodyStorage::remove(BodyId id) {
     swapRemove(i, centerOfMass, orientation, linearVelocity, angularVelocity, force, torque, mass,
                inverseMass, inertiaLocal, inverseInertiaLocal, inverseInertiaWorld,
                localCenterOfMass, motion, shape, friction, restitution, ccd, awake, sleepTime,
-               name, denseToSlot_);
+               name, proxy, denseToSlot_);
     slotToDense_[movedSlot] = static_cast<std::uint32_t>(i);
 
     ++slotGeneration_[id.index];  // stale handles to this slot now fail denseIndex()

@@ -33,6 +33,7 @@ public:
     std::vector<std::uint8_t> awake;         // 1 when simulated this step
     std::vector<float> sleepTime;            // s the body has been below the sleep thresholds
     std::vector<std::string> name;
+    std::vector<std::uint32_t> proxy;        // broad-phase proxy, set by the world
 
     std::size_t size() const { return centerOfMass.size(); }
 
@@ -43,6 +44,7 @@ public:
     // Dense index of a live body, or -1 for a stale or invalid id.
     int denseIndex(BodyId id) const;
     BodyId idAt(std::size_t denseIndex) const;
+    std::size_t denseIndexOfSlot(std::uint32_t slot) const { return slotToDense_[slot]; }  // slot must be live
 
     Vec3 origin(std::size_t i) const { return centerOfMass[i] - orientation[i] * localCenterOfMass[i]; }
     Transform transform(std::size_t i) const { return {origin(i), orientation[i]}; }

@@ -133,11 +133,12 @@ Aabb worldBounds(const Shape& shape, const Transform& transform) {
         return Aabb::fromCenterHalfExtents(transform.position, half);
     }
     case ShapeType::Cylinder: {
-        // A cap disc of radius r with unit normal a reaches r * sqrt(1 - a_i^2) along world axis i.
+        // A cap disc of radius r with unit normal a reaches r * sqrt(1 - a_i^2) along world axis i,
+        // written as r * sqrt(a_j^2 + a_k^2) to avoid cancellation when a is nearly along axis i.
         Vec3 half;
         for (int i = 0; i < 3; ++i) {
-            const float a = axisY[i];
-            half[i] = shape.halfHeight * std::abs(a) + shape.radius * std::sqrt(std::max(0.0f, 1.0f - a * a));
+            const float aj = axisY[(i + 1) % 3], ak = axisY[(i + 2) % 3];
+            half[i] = shape.halfHeight * std::abs(axisY[i]) + shape.radius * std::sqrt(aj * aj + ak * ak);
         }
         return Aabb::fromCenterHalfExtents(transform.position, half);
     }

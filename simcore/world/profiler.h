@@ -36,6 +36,7 @@ struct StepCounters {
 struct StepProfile {
     std::array<double, kStageCount> stageMs{};  // wall time per stage (ms)
     double totalMs = 0.0;                       // wall time of the whole step (ms)
+    float maxPenetration = 0.0f;                // deepest contact overlap when the step began (m)
     StepCounters counters;
 };
 

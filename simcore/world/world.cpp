@@ -75,9 +75,7 @@ void World::setSettings(const WorldSettings& settings) {
     validateSettings(settings);
     settings_ = settings;
     if (!settings_.effects[Effect::Sleeping] || !settings_.sleep.enabled) {
-        for (std::size_t i = 0; i < bodies_.size(); ++i) {
-            if (bodies_.motion[i] != MotionType::Static) bodies_.awake[i] = 1;
-        }
+        for (std::size_t i = 0; i < bodies_.size(); ++i) wakeIndex(i);
     }
 }
 
@@ -93,10 +91,20 @@ BodyId World::createBody(const BodyCreationSettings& settings) {
         // the integrated point of a kinematic body).
         massProperties.centerOfMass = simcore::massProperties(settings.shape, 1.0f).centerOfMass;
     }
-    return bodies_.add(settings, massProperties);
+    const BodyId id = bodies_.add(settings, massProperties);
+    const std::size_t i = bodies_.size() - 1;
+    // Static bodies never move, so their proxies are inactive: pairs need an active side.
+    bodies_.proxy[i] = broadPhase_.addProxy(worldBounds(settings.shape, bodies_.transform(i)), id.index,
+                                            settings.motion != MotionType::Static);
+    return id;
 }
 
-void World::destroyBody(BodyId id) { bodies_.remove(bodyIdChecked(id)); }
+void World::destroyBody(BodyId id) {
+    const std::size_t i = indexOf(id);
+    contactManager_.removeContactsOf(id.index);
+    broadPhase_.removeProxy(bodies_.proxy[i]);
+    bodies_.remove(id);
+}
 
 std::vector<BodyId> World::bodyIds() const {
     std::vector<BodyId> ids;
@@ -127,11 +135,11 @@ bool World::needs(Effect effect, const Activity& activity) const {
             return activity.anyAwakeDynamic && (settings_.damping.linear > 0.0f || settings_.damping.angular > 0.0f);
         case Effect::Gyroscopic: return activity.anySpinning;
         case Effect::Sleeping: return settings_.sleep.enabled && activity.anyAwakeDynamic;
-        // The contact pipeline, joints and continuous collision are not part of the engine yet,
-        // so nothing can need them.
-        case Effect::Contacts:
+        case Effect::Contacts: return activity.anyAwakeDynamic && bodies_.size() > 1;
+        // Friction and restitution are decided per constraint by the contact solver.
         case Effect::Friction:
         case Effect::Restitution:
+        // Joints and continuous collision are not part of the engine yet: nothing can need them.
         case Effect::Joints:
         case Effect::Ccd:
         case Effect::Count: return false;
@@ -140,19 +148,29 @@ bool World::needs(Effect effect, const Activity& activity) const {
 }
 
 // One step, in order of execution:
+//   1. broad phase: move the fat boxes of awake bodies; new overlapping pairs become contacts
+//   2. narrow phase: a fresh manifold for every contact with an awake body (impulses carried over)
+//   3. islands: bodies touching an awake island wake up with it
+//   4. prepare contact constraints (once per step, with last step's impulses)
 //   for each substep of h = timeStep / substeps:
-//     1. integrate velocities: gravity, external forces, gyroscopic torque, damping
-//     2. integrate positions: centres of mass and orientations from the new velocities
-//   3. sleep: bodies that stayed slow long enough stop being simulated
+//     5. integrate velocities: gravity, external forces, gyroscopic torque, damping
+//     6. warm start, then velocity iterations with position correction (soft contact or Baumgarte)
+//     7. integrate positions: centres of mass and orientations from the new velocities
+//     8. relax iterations: the same constraints without the push, so it does not become bounce
+//   9. restitution, and impulses stored for the next step's warm start
+//  10. sleep: islands that stayed slow long enough stop being simulated
+// Stages 1-4, 6 and 8-9 run only when contacts are needed; see needs() for every effect.
 void World::step() {
     const auto stepStart = std::chrono::steady_clock::now();
     StepProfile profile;
     auto& ms = profile.stageMs;
+    auto slot = [&ms](Stage stage) -> double& { return ms[static_cast<int>(stage)]; };
 
     const Activity activity = scanActivity();
     const bool gravity = needs(Effect::Gravity, activity);
     const bool damping = needs(Effect::Damping, activity);
     const bool gyroscopic = needs(Effect::Gyroscopic, activity);
+    const bool contacts = needs(Effect::Contacts, activity);
     const bool sleeping = needs(Effect::Sleeping, activity);
 
     const float h = settings_.timeStep / static_cast<float>(settings_.substeps);
@@ -164,24 +182,69 @@ void World::step() {
         velocityParams.angularRetention = std::exp(-settings_.damping.angular * h);
     }
 
+    if (contacts) {
+        {
+            ScopedStageTimer timer(slot(Stage::BroadPhase));
+            updateBroadPhase(settings_.timeStep);
+        }
+        {
+            ScopedStageTimer timer(slot(Stage::NarrowPhase));
+            updateContacts();
+        }
+        {
+            ScopedStageTimer timer(slot(Stage::Sleep));
+            islands_.build(bodies_, contactManager_.contacts());
+            islands_.wakeTouchedIslands(bodies_, [this](std::size_t i) { setAwake(i, true); });
+        }
+        ScopedStageTimer timer(slot(Stage::SolveConstraints));
+        ContactSolver::Params params;
+        params.substepDt = h;
+        params.friction = settings_.effects[Effect::Friction];
+        params.restitution = settings_.effects[Effect::Restitution];
+        params.solver = settings_.solver;
+        params.contact = settings_.contact;
+        contactSolver_.prepare(contactManager_.contacts(), bodies_, params);
+    }
+    const bool solveContacts = contacts && contactSolver_.constraintCount() > 0;
+    const bool relax = solveContacts && settings_.solver.positionCorrection == PositionCorrection::SoftStep;
+
     for (int substep = 0; substep < settings_.substeps; ++substep) {
         {
-            ScopedStageTimer timer(ms[static_cast<int>(Stage::IntegrateVelocities)]);
+            ScopedStageTimer timer(slot(Stage::IntegrateVelocities));
             integrateVelocities(bodies_, velocityParams, h);
         }
+        if (solveContacts) {
+            ScopedStageTimer timer(slot(Stage::SolveConstraints));
+            contactSolver_.warmStart(bodies_);
+            for (int i = 0; i < settings_.solver.velocityIterations; ++i) contactSolver_.solve(bodies_, true);
+        }
         {
-            ScopedStageTimer timer(ms[static_cast<int>(Stage::IntegratePositions)]);
+            ScopedStageTimer timer(slot(Stage::IntegratePositions));
             integratePositions(bodies_, h);
         }
+        if (relax) {
+            ScopedStageTimer timer(slot(Stage::SolveConstraints));
+            for (int i = 0; i < settings_.solver.positionIterations; ++i) contactSolver_.solve(bodies_, false);
+        }
+    }
+    if (solveContacts) {
+        ScopedStageTimer timer(slot(Stage::SolveConstraints));
+        if (contactSolver_.usesRestitution()) contactSolver_.applyRestitution(bodies_);
+        contactSolver_.storeImpulses(contactManager_.contacts());
     }
     if (sleeping) {
-        ScopedStageTimer timer(ms[static_cast<int>(Stage::Sleep)]);
-        updateSleep(settings_.timeStep);
+        ScopedStageTimer timer(slot(Stage::Sleep));
+        if (!contacts) islands_.build(bodies_, contactManager_.contacts());
+        islands_.sleepRestingIslands(bodies_, settings_.sleep, settings_.timeStep,
+                                     [this](std::size_t i) { setAwake(i, false); });
     }
 
     if (gravity) countEffect(Effect::Gravity);
     if (damping) countEffect(Effect::Damping);
     if (gyroscopic) countEffect(Effect::Gyroscopic);
+    if (contacts) countEffect(Effect::Contacts);
+    if (solveContacts && contactSolver_.usesFriction()) countEffect(Effect::Friction);
+    if (solveContacts && contactSolver_.usesRestitution()) countEffect(Effect::Restitution);
     if (sleeping) countEffect(Effect::Sleeping);
 
     StepCounters& counters = profile.counters;
@@ -190,6 +253,14 @@ void World::step() {
         if (bodies_.motion[i] == MotionType::Dynamic) ++counters.dynamicBodies;
         if (bodies_.awake[i]) ++counters.awakeBodies;
     }
+    counters.pairs = static_cast<std::uint32_t>(contactManager_.contacts().size());
+    for (const Contact& contact : contactManager_.contacts()) {
+        if (contact.manifold.pointCount == 0) continue;
+        ++counters.manifolds;
+        counters.contactPoints += static_cast<std::uint32_t>(contact.manifold.pointCount);
+    }
+    counters.islands = contacts ? islands_.awakeIslandCount() : 0;
+    profile.maxPenetration = solveContacts ? contactSolver_.maxPenetration() : 0.0f;
 
     ++stepCount_;
     simulatedTime_ += settings_.timeStep;
@@ -198,31 +269,30 @@ void World::step() {
     lastProfile_ = profile;
 }
 
-void World::updateSleep(float dt) {
-    const float linear2 = settings_.sleep.linearVelocity * settings_.sleep.linearVelocity;
-    const float angular2 = settings_.sleep.angularVelocity * settings_.sleep.angularVelocity;
+void World::updateBroadPhase(float dt) {
     for (std::size_t i = 0; i < bodies_.size(); ++i) {
-        if (bodies_.motion[i] != MotionType::Dynamic || !bodies_.awake[i]) continue;
-        const bool slow = lengthSquared(bodies_.linearVelocity[i]) <= linear2 &&
-                          lengthSquared(bodies_.angularVelocity[i]) <= angular2;
-        bodies_.sleepTime[i] = slow ? bodies_.sleepTime[i] + dt : 0.0f;
-        if (bodies_.sleepTime[i] >= settings_.sleep.timeToSleep) {
-            bodies_.awake[i] = 0;
-            bodies_.linearVelocity[i] = Vec3(0.0f);
-            bodies_.angularVelocity[i] = Vec3(0.0f);
-        }
+        if (bodies_.motion[i] == MotionType::Static || !bodies_.awake[i]) continue;
+        broadPhase_.moveProxy(bodies_.proxy[i], worldBounds(bodies_.shape[i], bodies_.transform(i)),
+                              dt * bodies_.linearVelocity[i]);
     }
+    broadPhase_.updatePairs(newPairs_);
+    contactManager_.addPairs(newPairs_, bodies_);
+}
+
+void World::updateContacts() {
+    contactManager_.updateManifolds(bodies_, broadPhase_, settings_.contact.speculativeDistance);
+}
+
+void World::setAwake(std::size_t i, bool awake) {
+    bodies_.awake[i] = awake ? 1 : 0;
+    if (awake) bodies_.sleepTime[i] = 0.0f;
+    broadPhase_.setActive(bodies_.proxy[i], awake);
 }
 
 std::size_t World::indexOf(BodyId id) const {
     const int i = bodies_.denseIndex(id);
     if (i < 0) throw std::out_of_range("stale or invalid body id");
     return static_cast<std::size_t>(i);
-}
-
-BodyId World::bodyIdChecked(BodyId id) const {
-    indexOf(id);
-    return id;
 }
 
 Vec3 World::position(BodyId id) const { return bodies_.origin(indexOf(id)); }
@@ -244,6 +314,7 @@ void World::setTransform(BodyId id, const Vec3& position, const Quat& orientatio
     bodies_.orientation[i] = glm::normalize(orientation);
     bodies_.centerOfMass[i] = position + bodies_.orientation[i] * bodies_.localCenterOfMass[i];
     bodies_.refreshInverseInertiaWorld(i);
+    broadPhase_.moveProxy(bodies_.proxy[i], worldBounds(bodies_.shape[i], bodies_.transform(i)), Vec3(0.0f));
     wakeIndex(i);
 }
 
@@ -292,9 +363,7 @@ void World::addImpulse(BodyId id, const Vec3& impulse, const Vec3& worldPoint) {
 void World::wake(BodyId id) { wakeIndex(indexOf(id)); }
 
 void World::wakeIndex(std::size_t i) {
-    if (bodies_.motion[i] == MotionType::Static) return;
-    bodies_.awake[i] = 1;
-    bodies_.sleepTime[i] = 0.0f;
+    if (bodies_.motion[i] != MotionType::Static) setAwake(i, true);
 }
 
 double World::kineticEnergy() const {

@@ -2,7 +2,11 @@
 // The world: bodies, settings, and the step. World::step is the one place that says what a step
 // does, in order; see world.cpp.
 
+#include "simcore/collision/broad_phase.h"
+#include "simcore/collision/contact_manager.h"
 #include "simcore/dynamics/body_storage.h"
+#include "simcore/dynamics/contact_solver.h"
+#include "simcore/dynamics/islands.h"
 #include "simcore/world/profiler.h"
 #include "simcore/world/world_settings.h"
 
@@ -80,6 +84,8 @@ public:
 
     // Direct read access to the arrays, for renderers and reports that visit every body.
     const BodyStorage& bodies() const { return bodies_; }
+    // Persistent contacts (touching or speculative), for debug drawing and tests.
+    const std::vector<Contact>& contacts() const { return contactManager_.contacts(); }
 
 private:
     // What the awake bodies are doing, gathered once per step to decide which effects run.
@@ -89,14 +95,20 @@ private:
     };
     Activity scanActivity() const;
     bool needs(Effect effect, const Activity& activity) const;
-    void updateSleep(float dt);
+    void updateBroadPhase(float dt);
+    void updateContacts();
+    void setAwake(std::size_t i, bool awake);
     void countEffect(Effect effect) { ++effectUsage_.stepsRun[static_cast<int>(effect)]; }
     std::size_t indexOf(BodyId id) const;  // dense index; throws std::out_of_range for a stale id
-    BodyId bodyIdChecked(BodyId id) const;
     void wakeIndex(std::size_t i);
 
     WorldSettings settings_;
     BodyStorage bodies_;
+    BroadPhase broadPhase_;
+    ContactManager contactManager_;
+    ContactSolver contactSolver_;
+    Islands islands_;
+    std::vector<BodyPair> newPairs_;  // scratch, reused every step
     StepProfile lastProfile_;
     EffectUsage effectUsage_;
     std::uint64_t stepCount_ = 0;

@@ -18,4 +18,12 @@ std::string_view effectName(Effect effect) {
     return "unknown";
 }
 
+std::string_view positionCorrectionName(PositionCorrection method) {
+    switch (method) {
+        case PositionCorrection::SoftStep: return "softStep";
+        case PositionCorrection::Baumgarte: return "baumgarte";
+    }
+    return "unknown";
+}
+
 }  // namespace simcore

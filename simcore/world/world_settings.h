@@ -35,10 +35,34 @@ struct EffectFlags {
     friend bool operator==(const EffectFlags&, const EffectFlags&) = default;
 };
 
+// How contacts remove overlap.
+enum class PositionCorrection : std::uint8_t {
+    // Soft contacts (Box2D v3's soft step): overlap is pushed out by a stiff, heavily damped spring
+    // solved inside the velocity iterations, then relax passes remove the push velocity so it
+    // does not turn into bounce. Stable in stacks; the default.
+    SoftStep,
+    // Classic Baumgarte stabilisation: a bias velocity proportional to the overlap beyond the
+    // slop, no relax passes. Cheaper per iteration, adds energy, jitters in tall stacks.
+    Baumgarte,
+};
+std::string_view positionCorrectionName(PositionCorrection method);  // "softStep", "baumgarte"
+
 struct SolverSettings {
-    int velocityIterations = 8;  // sequential-impulse passes per substep
-    int positionIterations = 3;  // position-correction passes per substep
+    int velocityIterations = 1;  // sequential-impulse passes per substep
+    int positionIterations = 1;  // per substep: relax passes (soft step); unused by Baumgarte
+    PositionCorrection positionCorrection = PositionCorrection::SoftStep;
+    float contactHertz = 60.0f;         // soft-contact stiffness (Hz), capped at a quarter of the substep rate
+    float contactDampingRatio = 10.0f;  // soft-contact damping ratio (overdamped: no spring-back)
+    float maxPushVelocity = 3.0f;       // m/s: overlap is never removed faster than this
+    float baumgarte = 0.2f;             // fraction of the overlap removed per substep (Baumgarte only)
     friend bool operator==(const SolverSettings&, const SolverSettings&) = default;
+};
+
+struct ContactSettings {
+    float speculativeDistance = 0.02f;   // m: points closer than this are solved before they touch
+    float linearSlop = 0.005f;           // m: overlap Baumgarte leaves alone, so resting contacts don't jitter
+    float restitutionThreshold = 1.0f;   // m/s: slower approaches do not bounce
+    friend bool operator==(const ContactSettings&, const ContactSettings&) = default;
 };
 
 struct DampingSettings {
@@ -59,8 +83,9 @@ struct SleepSettings {
 struct WorldSettings {
     Vec3 gravity{0.0f, -9.81f, 0.0f};  // m/s^2
     float timeStep = 1.0f / 60.0f;     // s, one call to World::step
-    int substeps = 1;                  // the step is split into this many equal substeps
+    int substeps = 4;                  // the step is split into this many equal substeps
     SolverSettings solver;
+    ContactSettings contact;
     DampingSettings damping;
     SleepSettings sleep;
     EffectFlags effects;

@@ -1,0 +1,565 @@
+#!/usr/bin/env python3
+"""Writes the generated scenes of Interplay (scene format v1) into scenes/.
+
+    python3 scenes/generate.py            # (re)writes every generated file
+    python3 scenes/generate.py --check    # exits 1 if a file on disk differs from what it would write
+
+Python 3 standard library only, and deterministic: no clock, no `random` module (a small fixed LCG
+gives the jitter), and the same numbers on every platform, so re-running it changes nothing.
+
+Benchmark scenes (scenes/bench/), exactly as issue 3 specifies them: SI units, g = 9.81,
+dt = 1/60 (written as 0.016666668, the float nearest 1/60), friction 0.6, restitution 0,
+1 kg unit cubes, a static ground box of half extents (50, 0.5, 50) at y = -0.5.
+  pile1k     1000 cubes, 10x10x10 grid, spacing 1.2, lowest centres at y = 2, centred on x/z = 0
+  pyramid10  385 cubes, layers 10x10 ... 1x1, each cube resting exactly on the layer below, sleep off
+  mixed1k    as pile1k, cycling box / sphere r 0.5 / capsule r 0.3 hh 0.4 / cylinder r 0.5 hh 0.5
+  tower20    20 cubes stacked exactly (centres y = 0.5 + i), sleep off
+They set no solver, substep or effect keys: "one step per frame" means one World::step per 1/60 s,
+and how simcore spends that step (its default substeps and iterations) is the engine's to choose, so
+the benchmark measures the engine at its defaults, as it does Bullet at Bullet's. No colours either:
+they are measurement inputs (bench/bullet_compare.cpp reads them).
+
+Demo scenes (scenes/): the same four with colours, plus mixed_rain, incline, newtons_cradle,
+heavy_on_light and dominoes. Choices that a reader could wonder about are stated in the function
+that builds each scene and, where it helps in the editor, in the body names.
+"""
+
+import argparse
+import colorsys
+import math
+import os
+import sys
+
+ROOT = os.path.dirname(os.path.abspath(__file__))
+
+class Exact(float):
+    """A number written as the shortest text that reads back as the same double (no rounding)."""
+
+
+DT = Exact(0.016666668)  # shortest text of the float nearest 1/60
+G = [0, -9.81, 0]
+
+
+# ----------------------------------------------------------------------------------------------
+# Writing: 2-space indent; an object or array that fits on one line (with its indent) is written
+# on one line, so bodies read as a few short lines each. Numbers rounded to 6 decimals.
+
+LINE_WIDTH = 110
+
+
+def fmt_number(x):
+    if isinstance(x, bool):
+        return "true" if x else "false"
+    if isinstance(x, int):
+        return str(x)
+    if isinstance(x, Exact):
+        return repr(float(x))
+    x = round(float(x), 6)
+    if x == 0:
+        return "0"  # also turns -0 into 0
+    if x == int(x) and abs(x) < 1e15:
+        return str(int(x))
+    text = repr(x)
+    if "e" in text or "E" in text:
+        text = ("%.6f" % x).rstrip("0").rstrip(".")
+    return text
+
+
+def fmt_inline(v):
+    if isinstance(v, dict):
+        if not v:
+            return "{}"
+        return "{ " + ", ".join('"%s": %s' % (k, fmt_inline(x)) for k, x in v.items()) + " }"
+    if isinstance(v, list):
+        return "[" + ", ".join(fmt_inline(x) for x in v) + "]"
+    if isinstance(v, str):
+        return '"' + v.replace("\\", "\\\\").replace('"', '\\"') + '"'
+    return fmt_number(v)
+
+
+def fmt(v, indent=0, lead=0):
+    """`indent`: the indent of the line the value starts on; `lead`: characters before it on that
+    line. What fits on the line is written inline; an object that does not is written one or more
+    "key": value pairs per line (as the hand-written scenes are), an array of arrays (hull points)
+    likewise several per line, any other array one element per line."""
+    one = fmt_inline(v)
+    if indent + lead + len(one) <= LINE_WIDTH or not isinstance(v, (dict, list)) or not v:
+        return one
+    # A list of numbers stays on one line whatever its length.
+    if isinstance(v, list) and all(not isinstance(x, (dict, list)) for x in v):
+        return one
+    pad = " " * (indent + 2)
+    if isinstance(v, list):
+        items = [fmt(x, indent + 2) for x in v]
+        pack = all(isinstance(x, list) for x in v)  # hull points: several per line
+    else:
+        items = ['"%s": %s' % (k, fmt(x, indent + 2, len(k) + 4)) for k, x in v.items()]
+        pack = indent > 0  # the top level keeps one key per line
+    if not pack:
+        return v_open(v) + "\n" + ",\n".join(pad + item for item in items) + "\n" + " " * indent + v_close(v)
+    lines = []
+    current = ""
+    for item in items:
+        if "\n" in item:
+            if current:
+                lines.append(current)
+            lines.append(item)
+            current = ""
+        elif current and indent + 2 + len(current) + 2 + len(item) <= LINE_WIDTH:
+            current += ", " + item
+        else:
+            if current:
+                lines.append(current)
+            current = item
+    if current:
+        lines.append(current)
+    return v_open(v) + "\n" + ",\n".join(pad + line for line in lines) + "\n" + " " * indent + v_close(v)
+
+
+def v_open(v):
+    return "{" if isinstance(v, dict) else "["
+
+
+def v_close(v):
+    return "}" if isinstance(v, dict) else "]"
+
+
+def scene_text(scene):
+    return fmt(scene) + "\n"
+
+
+# ----------------------------------------------------------------------------------------------
+# Small helpers
+
+
+class Lcg:
+    """Deterministic pseudo-random numbers (64-bit LCG, Knuth's MMIX constants)."""
+
+    def __init__(self, seed):
+        self.state = seed & 0xFFFFFFFFFFFFFFFF
+
+    def next(self):  # in [0, 1)
+        self.state = (self.state * 6364136223846793005 + 1442695040888963407) & 0xFFFFFFFFFFFFFFFF
+        return (self.state >> 11) / float(1 << 53)
+
+    def uniform(self, a, b):
+        return a + (b - a) * self.next()
+
+
+def quat_axis_angle(axis, angle):
+    """Unit quaternion [w, x, y, z] rotating by `angle` (rad) about `axis`."""
+    n = math.sqrt(sum(c * c for c in axis))
+    s = math.sin(angle / 2) / n
+    return [math.cos(angle / 2), axis[0] * s, axis[1] * s, axis[2] * s]
+
+
+def quat_mul(a, b):
+    aw, ax, ay, az = a
+    bw, bx, by, bz = b
+    return [aw * bw - ax * bx - ay * by - az * bz,
+            aw * bx + ax * bw + ay * bz - az * by,
+            aw * by - ax * bz + ay * bw + az * bx,
+            aw * bz + ax * by - ay * bx + az * bw]
+
+
+def rotate(q, v):
+    w, x, y, z = q
+    # v' = v + 2 w (u x v) + 2 u x (u x v), u = (x, y, z)
+    ux = [y * v[2] - z * v[1], z * v[0] - x * v[2], x * v[1] - y * v[0]]
+    uux = [y * ux[2] - z * ux[1], z * ux[0] - x * ux[2], x * ux[1] - y * ux[0]]
+    return [v[i] + 2 * w * ux[i] + 2 * uux[i] for i in range(3)]
+
+
+def add(a, b):
+    return [a[i] + b[i] for i in range(3)]
+
+
+def scale(v, s):
+    return [c * s for c in v]
+
+
+def hsv(h, s=0.55, v=0.9):
+    return [round(c, 3) for c in colorsys.hsv_to_rgb(h % 1.0, s, v)]
+
+
+def settings(gravity=None, sleep=True):
+    s = {"gravity": gravity if gravity is not None else G, "timeStep": DT}
+    if not sleep:
+        s["sleep"] = {"enabled": False}
+    return s
+
+
+def scene(settings_, bodies):
+    return {"format": "interplay.scene", "version": 1, "settings": settings_, "bodies": bodies, "joints": []}
+
+
+def ground(half=(50, 0.5, 50), friction=0.6, color=None, name="ground"):
+    b = {"name": name, "motion": "static", "shape": {"type": "box", "halfExtents": list(half)},
+         "position": [0, -half[1], 0], "friction": friction, "restitution": 0}
+    if color is not None:
+        b["color"] = color
+    return b
+
+
+def body(name, shape, position, mass=None, density=None, orientation=None, friction=None, restitution=None,
+         color=None, linear_velocity=None, angular_velocity=None, motion=None):
+    b = {"name": name}
+    if motion is not None:
+        b["motion"] = motion
+    b["shape"] = shape
+    b["position"] = position
+    if orientation is not None:
+        b["orientation"] = orientation
+    if mass is not None:
+        b["mass"] = mass
+    if density is not None:
+        b["density"] = density
+    if friction is not None:
+        b["friction"] = friction
+    if restitution is not None:
+        b["restitution"] = restitution
+    if color is not None:
+        b["color"] = color
+    if linear_velocity is not None:
+        b["linearVelocity"] = linear_velocity
+    if angular_velocity is not None:
+        b["angularVelocity"] = angular_velocity
+    return b
+
+
+def box(hx, hy, hz):
+    return {"type": "box", "halfExtents": [hx, hy, hz]}
+
+
+def sphere(r):
+    return {"type": "sphere", "radius": r}
+
+
+def capsule(r, hh):
+    return {"type": "capsule", "radius": r, "halfHeight": hh}
+
+
+def cylinder(r, hh):
+    return {"type": "cylinder", "radius": r, "halfHeight": hh}
+
+
+def hull(points):
+    return {"type": "convexHull", "points": [[round(c, 4) for c in p] for p in points]}
+
+
+UNIT_CUBE = box(0.5, 0.5, 0.5)
+GROUND_COLOR = [0.55, 0.57, 0.6]
+
+
+# ----------------------------------------------------------------------------------------------
+# Benchmark scenes (and the demo versions of the same arrangements)
+
+
+def grid_positions():
+    """pile1k / mixed1k: 10x10x10, spacing 1.2, lowest centres at y = 2, centred on x = z = 0.
+    Ordered layer by layer from the bottom, then z, then x."""
+    out = []
+    for j in range(10):
+        for k in range(10):
+            for i in range(10):
+                out.append(((i, j, k), [(i - 4.5) * 1.2, 2 + j * 1.2, (k - 4.5) * 1.2]))
+    return out
+
+
+def pile1k(colored):
+    bodies = [ground(color=GROUND_COLOR if colored else None)]
+    for (i, j, k), p in grid_positions():
+        color = hsv(0.02 + 0.6 * j / 9, 0.55, 0.92) if colored else None
+        bodies.append(body("cube %d %d %d" % (i, j, k), UNIT_CUBE, p, mass=1, friction=0.6, restitution=0,
+                           color=color))
+    return scene(settings(), bodies)
+
+
+MIXED_SHAPES = [("box", UNIT_CUBE), ("sphere", sphere(0.5)), ("capsule", capsule(0.3, 0.4)),
+                ("cylinder", cylinder(0.5, 0.5))]
+MIXED_COLORS = [[0.91, 0.45, 0.32], [0.2, 0.65, 0.7], [0.95, 0.75, 0.25], [0.55, 0.45, 0.85]]
+
+
+def mixed1k(colored):
+    bodies = [ground(color=GROUND_COLOR if colored else None)]
+    for n, ((i, j, k), p) in enumerate(grid_positions()):
+        kind, shape = MIXED_SHAPES[n % 4]
+        color = MIXED_COLORS[n % 4] if colored else None
+        bodies.append(body("%s %d %d %d" % (kind, i, j, k), shape, p, mass=1, friction=0.6, restitution=0,
+                           color=color))
+    return scene(settings(), bodies)
+
+
+def pyramid10(colored):
+    """Base 10: layer L (0 = bottom) is (10 - L) x (10 - L) cubes, centres y = 0.5 + L, neighbours
+    touching face to face (spacing 1), centred on x = z = 0. 385 cubes. Sleep off."""
+    bodies = [ground(color=GROUND_COLOR if colored else None)]
+    for layer in range(10):
+        n = 10 - layer
+        for k in range(n):
+            for i in range(n):
+                p = [i - (n - 1) / 2, 0.5 + layer, k - (n - 1) / 2]
+                color = hsv(0.08 + 0.07 * layer, 0.6, 0.93) if colored else None
+                bodies.append(body("cube L%d %d %d" % (layer, i, k), UNIT_CUBE, p, mass=1, friction=0.6,
+                                   restitution=0, color=color))
+    return scene(settings(sleep=False), bodies)
+
+
+def tower20(colored):
+    """20 unit cubes stacked exactly, centres y = 0.5 + i. Sleep off."""
+    bodies = [ground(color=GROUND_COLOR if colored else None)]
+    for i in range(20):
+        color = hsv(0.58 - 0.5 * i / 19, 0.55, 0.92) if colored else None
+        bodies.append(body("cube %d" % i, UNIT_CUBE, [0, 0.5 + i, 0], mass=1, friction=0.6, restitution=0,
+                           color=color))
+    return scene(settings(sleep=False), bodies)
+
+
+# ----------------------------------------------------------------------------------------------
+# Demo scenes
+
+
+def rock_points(rng, rx, ry, rz, count=14):
+    """Points of an irregular rock: a Fibonacci sphere, squashed to an ellipsoid, radii jittered."""
+    pts = []
+    golden = math.pi * (3 - math.sqrt(5))
+    for n in range(count):
+        y = 1 - 2 * (n + 0.5) / count
+        r = math.sqrt(1 - y * y)
+        a = golden * n
+        j = rng.uniform(0.8, 1.0)
+        pts.append([math.cos(a) * r * rx * j, y * ry * j, math.sin(a) * r * rz * j])
+    return pts
+
+
+def wedge_points(hx, hy, hz):
+    return [[-hx, -hy, -hz], [hx, -hy, -hz], [-hx, -hy, hz], [hx, -hy, hz], [-hx, hy, 0], [hx, hy, 0]]
+
+
+def tetra_points(s):
+    return [[s, s, s], [s, -s, -s], [-s, s, -s], [-s, -s, s]]
+
+
+def gem_points(r, h):
+    """An octagonal bipyramid (a cut gem): 8 points around, one above, one below."""
+    pts = [[r * math.cos(2 * math.pi * n / 8), 0, r * math.sin(2 * math.pi * n / 8)] for n in range(8)]
+    return pts + [[0, h, 0], [0, -0.6 * h, 0]]
+
+
+def random_orientation(rng):
+    # Uniform random rotation (Shoemake).
+    u1, u2, u3 = rng.next(), rng.next(), rng.next()
+    a, b = math.sqrt(1 - u1), math.sqrt(u1)
+    return [b * math.cos(2 * math.pi * u3), a * math.sin(2 * math.pi * u2), a * math.cos(2 * math.pi * u2),
+            b * math.sin(2 * math.pi * u3)]
+
+
+def mixed_rain():
+    """324 bodies of every shape type (boxes, spheres, capsules, cylinders and four kinds of convex
+    hull) on a jittered 6 x 6 x 9 lattice (2.4 m apart horizontally, 2 m vertically, from 6 m up to
+    22 m), randomly oriented, falling onto the ground. Every body fits in a 0.7 m radius, so none
+    overlap at the start. Densities vary from wood to stone."""
+    rng = Lcg(20240611)
+    bodies = [ground(half=(30, 0.5, 30), color=GROUND_COLOR)]
+    kinds = ["box", "sphere", "capsule", "cylinder", "rock", "wedge", "tetra", "gem"]
+    materials = [("wood", 600), ("plastic", 1100), ("stone", 2500)]
+    n = 0
+    for layer in range(9):
+        for k in range(6):
+            for i in range(6):
+                kind = kinds[(n * 5 + layer) % len(kinds)]
+                if kind == "box":
+                    shape = box(round(rng.uniform(0.2, 0.4), 3), round(rng.uniform(0.2, 0.4), 3),
+                                round(rng.uniform(0.2, 0.4), 3))
+                elif kind == "sphere":
+                    shape = sphere(round(rng.uniform(0.2, 0.45), 3))
+                elif kind == "capsule":
+                    shape = capsule(round(rng.uniform(0.15, 0.25), 3), round(rng.uniform(0.2, 0.4), 3))
+                elif kind == "cylinder":
+                    shape = cylinder(round(rng.uniform(0.2, 0.4), 3), round(rng.uniform(0.15, 0.4), 3))
+                elif kind == "rock":
+                    shape = hull(rock_points(rng, rng.uniform(0.3, 0.55), rng.uniform(0.25, 0.45),
+                                             rng.uniform(0.3, 0.55)))
+                elif kind == "wedge":
+                    shape = hull(wedge_points(rng.uniform(0.3, 0.45), rng.uniform(0.2, 0.3), rng.uniform(0.25, 0.38)))
+                elif kind == "tetra":
+                    shape = hull(tetra_points(rng.uniform(0.25, 0.38)))
+                else:
+                    shape = hull(gem_points(rng.uniform(0.3, 0.45), rng.uniform(0.3, 0.45)))
+                material, density = materials[(n * 7 + i) % 3]
+                p = [(i - 2.5) * 2.4 + rng.uniform(-0.4, 0.4), 6 + 2 * layer + rng.uniform(-0.25, 0.25),
+                     (k - 2.5) * 2.4 + rng.uniform(-0.4, 0.4)]
+                q = random_orientation(rng)
+                color = hsv(rng.next(), rng.uniform(0.45, 0.7), rng.uniform(0.8, 0.95))
+                bodies.append(body("%s %d (%s)" % (kind, n, material), shape, p, density=density, orientation=q,
+                                   friction=0.6, color=color))
+                n += 1
+    return scene(settings(), bodies)
+
+
+def incline():
+    """The thesis's slope test (its table 6.4): 30-degree static ramps side by side, a 0.5 m cube
+    resting on each of the first three at friction 0, 0.5 and 1, and a sphere (r 0.25) on the
+    fourth, all released from rest; a low static wall 8 m out catches what slides off. Each ramp and
+    the body on it have the same coefficient, so the pair's friction is that value under any usual
+    combining rule (min, max, mean, geometric mean); only a product rule would square it.
+    tan 30 = 0.577: the cube at 0.5 slides with a = g (sin 30 - 0.5 cos 30) = 0.657 m/s^2, the one
+    at 1 stays; the sphere rolls without slipping (needs mu >= 2/7 tan 30 = 0.165) with
+    a = 5/7 g sin 30 = 3.50 m/s^2. Sleep is off so creep is not hidden."""
+    theta = math.radians(30)
+    q = quat_axis_angle([0, 0, 1], theta)  # ramps rise toward +x
+    t = rotate(q, [1, 0, 0])  # down-slope is -t
+    nrm = rotate(q, [0, 1, 0])
+    half_len, half_thick, half_width = 3.0, 0.1, 0.75
+    bodies = [ground(half=(20, 0.5, 20), color=GROUND_COLOR)]
+    lanes = [("mu 0 (slides freely)", 0.0, "box"), ("mu 0.5 (slides, a = 0.66)", 0.5, "box"),
+             ("mu 1 (stays)", 1.0, "box"), ("mu 0.5 (rolls, a = 5/7 g sin30)", 0.5, "sphere")]
+    lane_colors = [[0.9, 0.35, 0.3], [0.95, 0.7, 0.25], [0.35, 0.75, 0.4], [0.25, 0.6, 0.9]]
+    for n, (label, mu, kind) in enumerate(lanes):
+        z = (n - 1.5) * 2.0
+        centre = [0, half_len * math.sin(theta) + half_thick + 0.01, z]  # lowest edge just above the ground
+        bodies.append(body("incline 30deg %s" % label.split(" (")[0], box(half_len, half_thick, half_width), centre,
+                           motion="static", orientation=q, friction=mu, restitution=0, color=[0.62, 0.6, 0.56]))
+        s = 1.8  # distance up the slope from the ramp's centre
+        if kind == "box":
+            h = 0.25
+            p = add(add(centre, scale(t, s)), scale(nrm, half_thick + h))
+            bodies.append(body("box %s" % label, box(h, h, h), p, mass=1, orientation=q, friction=mu, restitution=0,
+                               color=lane_colors[n]))
+        else:
+            r = 0.25
+            p = add(add(centre, scale(t, s)), scale(nrm, half_thick + r))
+            bodies.append(body("sphere %s" % label, sphere(r), p, mass=1, friction=mu, restitution=0,
+                               color=lane_colors[n]))
+    # Frictionless bodies would otherwise slide off the edge of the ground.
+    bodies.append(body("stop wall (catches what slides off the inclines)", box(0.25, 0.4, 4.0), [-8, 0.4, 0],
+                       motion="static", friction=0.5, restitution=0, color=[0.5, 0.5, 0.55]))
+    return scene(settings(sleep=False), bodies)
+
+
+def newtons_cradle():
+    """Five touching spheres (r 0.25, 1 kg) in a row along x, restitution 1, friction 0; the first
+    moves at 2 m/s toward the others. There are no joints yet to hang them by strings, and resting
+    them on a floor would mix floor contacts (and their friction and restitution) into what should
+    be a pure sphere-sphere chain, so the scene is in zero gravity: the spheres float 1 m above a
+    floor they never touch. Two static end walls (restitution 1, 1.5 m beyond each end) send the
+    ball that leaves back, so the cradle keeps going: with perfect restitution the total kinetic
+    energy stays 2 J. Sleep is off."""
+    r = 0.25
+    y = 1.0
+    bodies = [ground(half=(10, 0.5, 10), color=GROUND_COLOR, name="floor (not touched: zero gravity)")]
+    x0 = -2 * r * 2  # centre of the first of five touching spheres, row centred on x = 0
+    wall_gap = 1.5
+    for side, x in (("left", x0 - r - wall_gap - 0.1), ("right", -x0 + r + wall_gap + 0.1)):
+        bodies.append(body("%s end wall (zero gravity, no strings)" % side, box(0.1, 1.0, 1.0), [x, y, 0],
+                           motion="static", friction=0, restitution=1, color=[0.6, 0.6, 0.65]))
+    for n in range(5):
+        name = "ball %d" % (n + 1) + (" (moving 2 m/s)" if n == 0 else "")
+        bodies.append(body(name, sphere(r), [x0 + 2 * r * n, y, 0], mass=1, friction=0, restitution=1,
+                           color=[0.9, 0.75, 0.3] if n == 0 else [0.75, 0.77, 0.8],
+                           linear_velocity=[2, 0, 0] if n == 0 else None))
+    return scene(settings(gravity=[0, 0, 0], sleep=False), bodies)
+
+
+def heavy_on_light():
+    """Mass-ratio stacks resting exactly on the ground: a 100 kg unit cube on a 1 kg one, and beside
+    it a 1000 kg cube on a 1 kg one. The hard case is the light box at the bottom: a solver that
+    converges slowly lets the heavy one sink into it. Sleep is off."""
+    bodies = [ground(half=(20, 0.5, 20), color=GROUND_COLOR)]
+    for x, ratio, heavy in ((-1.5, 100, 100), (1.5, 1000, 1000)):
+        bodies.append(body("light 1 kg (under %d:1)" % ratio, UNIT_CUBE, [x, 0.5, 0], mass=1, friction=0.6,
+                           restitution=0, color=[0.95, 0.85, 0.55]))
+        bodies.append(body("heavy %d kg (%d:1)" % (heavy, ratio), UNIT_CUBE, [x, 1.5, 0], mass=heavy,
+                           friction=0.6, restitution=0, color=[0.35, 0.35, 0.45] if ratio == 100 else [0.25, 0.22, 0.3]))
+    return scene(settings(sleep=False), bodies)
+
+
+def dominoes():
+    """32 dominoes (half extents 0.05 x 0.5 x 0.25: 0.1 thick, 1 high, 0.5 wide) 0.55 m apart along
+    a path: 8 straight along +x, a half circle of radius 2.2, then back along -x. Each stands upright,
+    its thin axis along the path. The first is given 1.5 rad/s about the horizontal axis across
+    the path so it tips forward into the second."""
+    spacing = 0.55
+    straight = 8 * spacing
+    radius = 2.2
+    arc = math.pi * radius
+    count = 32
+    h = [0.05, 0.5, 0.25]
+
+    def path(s):  # point and unit tangent at arc length s
+        if s <= straight:
+            return [s - straight / 2, 0, 0], [1, 0, 0]
+        if s <= straight + arc:
+            a = (s - straight) / radius  # 0 .. pi, turning left (toward -z)
+            c = [straight / 2, 0, -radius]
+            return [c[0] + radius * math.sin(a), 0, c[2] + radius * math.cos(a)], [math.cos(a), 0, -math.sin(a)]
+        d = s - straight - arc
+        return [straight / 2 - d, 0, -2 * radius], [-1, 0, 0]
+
+    bodies = [ground(half=(20, 0.5, 20), color=GROUND_COLOR)]
+    for n in range(count):
+        p, t = path(n * spacing)
+        yaw = math.atan2(-t[2], t[0])  # rotation about +y taking local x onto the tangent
+        q = quat_axis_angle([0, 1, 0], yaw)
+        w = None
+        if n == 0:
+            # up x tangent: the top moves along the tangent.
+            w = scale([t[2], 0, -t[0]], 1.5)
+        bodies.append(body("domino %d" % (n + 1) + (" (pushed)" if n == 0 else ""), box(*h), [p[0], h[1], p[2]],
+                           density=650, orientation=q, friction=0.5, restitution=0,
+                           color=hsv(n / count, 0.6, 0.92), angular_velocity=w))
+    return scene(settings(), bodies)
+
+
+# ----------------------------------------------------------------------------------------------
+
+
+def all_scenes():
+    return {
+        "bench/pile1k.json": pile1k(False),
+        "bench/pyramid10.json": pyramid10(False),
+        "bench/mixed1k.json": mixed1k(False),
+        "bench/tower20.json": tower20(False),
+        "pile1k.json": pile1k(True),
+        "pyramid10.json": pyramid10(True),
+        "mixed1k.json": mixed1k(True),
+        "tower20.json": tower20(True),
+        "mixed_rain.json": mixed_rain(),
+        "incline.json": incline(),
+        "newtons_cradle.json": newtons_cradle(),
+        "heavy_on_light.json": heavy_on_light(),
+        "dominoes.json": dominoes(),
+    }
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--check", action="store_true", help="compare with the files on disk, write nothing")
+    args = parser.parse_args()
+    stale = []
+    for rel, sc in all_scenes().items():
+        path = os.path.join(ROOT, rel)
+        text = scene_text(sc)
+        old = None
+        if os.path.exists(path):
+            with open(path, encoding="utf-8") as f:
+                old = f.read()
+        if args.check:
+            if old != text:
+                stale.append(rel)
+            continue
+        if old != text:
+            os.makedirs(os.path.dirname(path), exist_ok=True)
+            tmp = path + ".tmp"
+            with open(tmp, "w", encoding="utf-8", newline="\n") as f:
+                f.write(text)
+            os.replace(tmp, path)
+        print("%-28s %4d bodies" % (rel, len(sc["bodies"])))
+    if stale:
+        print("out of date: " + ", ".join(stale), file=sys.stderr)
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,128 @@
+#include "simcore/collision/contact_manager.h"
+
+#include "simcore/collision/collide_shapes.h"
+
+#include <cmath>
+
+namespace simcore {
+
+namespace {
+
+// Points closer than this to last step's point (m) are taken to be the same contact.
+constexpr float kPersistenceDistance = 0.01f;
+
+// Warm start: each new point inherits the impulses of last step's point made by the same pair of
+// features or, failing that, of the nearest unclaimed old point within kPersistenceDistance. The
+// fallback matters where ids are ambiguous: at the corners of two coincident faces a point is both
+// an incident vertex and a clip intersection, and the label flips with the tiniest rotation.
+std::array<ContactImpulse, kMaxManifoldPoints> matchImpulses(const ContactManifold& old,
+                                                             const std::array<ContactImpulse, kMaxManifoldPoints>& oldImpulses,
+                                                             const ContactManifold& fresh) {
+    std::array<ContactImpulse, kMaxManifoldPoints> impulses{};
+    bool claimed[kMaxManifoldPoints] = {};
+    bool matched[kMaxManifoldPoints] = {};
+    for (int i = 0; i < fresh.pointCount; ++i) {
+        for (int j = 0; j < old.pointCount; ++j) {
+            if (!claimed[j] && old.points[j].featureId == fresh.points[i].featureId) {
+                impulses[i] = oldImpulses[j];
+                claimed[j] = matched[i] = true;
+                break;
+            }
+        }
+    }
+    for (int i = 0; i < fresh.pointCount; ++i) {
+        if (matched[i]) continue;
+        int nearest = -1;
+        float nearestDistance2 = kPersistenceDistance * kPersistenceDistance;
+        for (int j = 0; j < old.pointCount; ++j) {
+            const float d2 = lengthSquared(old.points[j].pointA - fresh.points[i].pointA);
+            if (!claimed[j] && d2 < nearestDistance2) {
+                nearest = j;
+                nearestDistance2 = d2;
+            }
+        }
+        if (nearest >= 0) {
+            impulses[i] = oldImpulses[nearest];
+            claimed[nearest] = true;
+        }
+    }
+    return impulses;
+}
+
+}  // namespace
+
+float combineFriction(float a, float b) { return std::sqrt(a * b); }
+float combineRestitution(float a, float b) { return std::max(a, b); }
+
+void ContactManager::addPairs(const std::vector<BodyPair>& pairs, const BodyStorage& bodies) {
+    for (const BodyPair& pair : pairs) {
+        const std::uint64_t key = PairTable::key(pair.a, pair.b);
+        if (pairToContact_.find(key) != PairTable::kNotFound) continue;
+        const std::size_t a = bodies.denseIndexOfSlot(pair.a);
+        const std::size_t b = bodies.denseIndexOfSlot(pair.b);
+        if (bodies.motion[a] != MotionType::Dynamic && bodies.motion[b] != MotionType::Dynamic) continue;
+
+        Contact contact;
+        contact.slotA = pair.a;
+        contact.slotB = pair.b;
+        contact.friction = combineFriction(bodies.friction[a], bodies.friction[b]);
+        contact.restitution = combineRestitution(bodies.restitution[a], bodies.restitution[b]);
+        pairToContact_.insert(key, static_cast<std::uint32_t>(contacts_.size()));
+        contacts_.push_back(contact);
+    }
+}
+
+void ContactManager::updateManifolds(const BodyStorage& bodies, const BroadPhase& broadPhase,
+                                     float speculativeDistance) {
+    auto isAwakeDynamic = [&bodies](std::size_t i) {
+        return bodies.motion[i] == MotionType::Dynamic && bodies.awake[i];
+    };
+    for (std::size_t c = 0; c < contacts_.size();) {
+        Contact& contact = contacts_[c];
+        const std::size_t a = bodies.denseIndexOfSlot(contact.slotA);
+        const std::size_t b = bodies.denseIndexOfSlot(contact.slotB);
+        if (!isAwakeDynamic(a) && !isAwakeDynamic(b)) {
+            ++c;  // a sleeping pair keeps its manifold, ready for when it wakes
+            continue;
+        }
+        if (!broadPhase.testOverlap(bodies.proxy[a], bodies.proxy[b])) {
+            removeAt(c);  // the last contact moved into slot c: visit it next
+            continue;
+        }
+
+        ContactManifold manifold;
+        collideShapes(bodies.shape[a], bodies.transform(a), bodies.shape[b], bodies.transform(b),
+                      speculativeDistance, manifold);
+
+        contact.impulses = matchImpulses(contact.manifold, contact.impulses, manifold);
+        contact.manifold = manifold;
+        ++c;
+    }
+}
+
+void ContactManager::removeAt(std::size_t index) {
+    pairToContact_.erase(PairTable::key(contacts_[index].slotA, contacts_[index].slotB));
+    if (index + 1 != contacts_.size()) {
+        contacts_[index] = contacts_.back();
+        pairToContact_.assign(PairTable::key(contacts_[index].slotA, contacts_[index].slotB),
+                              static_cast<std::uint32_t>(index));
+    }
+    contacts_.pop_back();
+}
+
+void ContactManager::removeContactsOf(std::uint32_t slot) {
+    for (std::size_t c = 0; c < contacts_.size();) {
+        if (contacts_[c].slotA == slot || contacts_[c].slotB == slot) {
+            removeAt(c);
+        } else {
+            ++c;
+        }
+    }
+}
+
+void ContactManager::clear() {
+    contacts_.clear();
+    pairToContact_.clear();
+}
+
+}  // namespace simcore

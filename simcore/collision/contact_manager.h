@@ -1,0 +1,59 @@
+#pragma once
+// Persistent contacts: one per pair of bodies whose fat bounds overlap. Created from the broad
+// phase's new pairs, refreshed by the narrow phase every step while either body is awake, and
+// destroyed when the fat bounds separate. Each manifold point keeps its accumulated impulses
+// across steps, matched by feature id, so the solver starts from last step's answer.
+
+#include "simcore/collision/broad_phase.h"
+#include "simcore/collision/contact_manifold.h"
+#include "simcore/collision/pair_table.h"
+#include "simcore/dynamics/body_storage.h"
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace simcore {
+
+struct ContactImpulse {
+    float normal = 0.0f;    // N s, >= 0
+    float tangent1 = 0.0f;  // N s, along ContactManifold's first tangent
+    float tangent2 = 0.0f;
+};
+
+struct Contact {
+    std::uint32_t slotA = 0, slotB = 0;  // body slots (BodyId::index): stable across removals
+    float friction = 0.0f;               // combined: sqrt(frictionA * frictionB)
+    float restitution = 0.0f;            // combined: max(restitutionA, restitutionB)
+    ContactManifold manifold;
+    std::array<ContactImpulse, kMaxManifoldPoints> impulses{};
+};
+
+// Friction combines by geometric mean (a frictionless surface makes any pair frictionless) and
+// restitution by maximum (a bouncy ball bounces on any floor), as in Box2D and Jolt.
+float combineFriction(float a, float b);
+float combineRestitution(float a, float b);
+
+class ContactManager {
+public:
+    // Creates contacts for new broad-phase pairs (userData = body slot) that involve a dynamic body.
+    void addPairs(const std::vector<BodyPair>& pairs, const BodyStorage& bodies);
+
+    // Narrow phase: refreshes the manifold of every contact with an awake dynamic body, and
+    // destroys contacts whose bodies' fat bounds no longer overlap.
+    void updateManifolds(const BodyStorage& bodies, const BroadPhase& broadPhase, float speculativeDistance);
+
+    void removeContactsOf(std::uint32_t slot);
+    void clear();
+
+    std::vector<Contact>& contacts() { return contacts_; }
+    const std::vector<Contact>& contacts() const { return contacts_; }
+
+private:
+    void removeAt(std::size_t index);
+
+    std::vector<Contact> contacts_;
+    PairTable pairToContact_;
+};
+
+}  // namespace simcore
