@@ -38,6 +38,8 @@ void compareScenes(const Scene& a, const Scene& b) {
     QCOMPARE(sa.substeps, sb.substeps);
     QCOMPARE(sa.solver.velocityIterations, sb.solver.velocityIterations);
     QCOMPARE(sa.solver.positionIterations, sb.solver.positionIterations);
+    QVERIFY(sa.solver == sb.solver);
+    QVERIFY(sa.contact == sb.contact);
     QVERIFY(sameBits(sa.damping.linear, sb.damping.linear));
     QVERIFY(sameBits(sa.damping.angular, sb.damping.angular));
     QCOMPARE(sa.sleep.enabled, sb.sleep.enabled);
@@ -101,6 +103,14 @@ Scene awkwardScene() {
     s.settings.substeps = 3;
     s.settings.solver.velocityIterations = 17;
     s.settings.solver.positionIterations = 0;
+    s.settings.solver.positionCorrection = PositionCorrection::Baumgarte;
+    s.settings.solver.contactHertz = 45.5f;
+    s.settings.solver.contactDampingRatio = 0.7f;
+    s.settings.solver.maxPushVelocity = 1.0f / 3.0f;
+    s.settings.solver.baumgarte = 0.15f;
+    s.settings.contact.speculativeDistance = 0.035f;
+    s.settings.contact.linearSlop = 1e-3f;
+    s.settings.contact.restitutionThreshold = 0.25f;
     s.settings.damping.linear = 0.1f;
     s.settings.damping.angular = 1e-7f;
     s.settings.sleep.enabled = false;

@@ -131,6 +131,12 @@ inline constexpr Range kTimeStep{1e-6, 1.0, false, " s"};
 inline constexpr Range kDampingRate{0.0, 1e3, false, " 1/s"};
 inline constexpr Range kSleepSpeed{0.0, 1e3, false};
 inline constexpr Range kTimeToSleep{0.0, 1e6, false, " s"};
+inline constexpr Range kContactHertz{0.0, 1e4, true, " Hz"};
+inline constexpr Range kDampingRatio{0.0, 1e4, false};
+inline constexpr Range kPushVelocity{0.0, 1e4, true, " m/s"};
+inline constexpr Range kBaumgarte{0.0, 1.0, false};
+inline constexpr Range kContactDistance{0.0, 10.0, false, " m"};   // speculative distance, slop
+inline constexpr Range kRestitutionThreshold{0.0, 1e4, false, " m/s"};
 inline constexpr int kMinSubsteps = 1, kMaxSubsteps = 64;
 inline constexpr int kMinVelocityIterations = 1, kMaxVelocityIterations = 1000;
 inline constexpr int kMinPositionIterations = 0, kMaxPositionIterations = 1000;

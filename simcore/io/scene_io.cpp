@@ -55,7 +55,7 @@ constexpr std::uintmax_t kMaxFileBytes = 64u * 1024u * 1024u;  // far beyond any
 
 void readSettings(Reader& r, const Json& s, const std::string& path, WorldSettings& out) {
     if (!r.expectObject(s, path)) return;
-    r.checkKeys(s, path, {"gravity", "timeStep", "substeps", "solver", "damping", "sleep", "effects"});
+    r.checkKeys(s, path, {"gravity", "timeStep", "substeps", "solver", "contact", "damping", "sleep", "effects"});
     r.optionalVec3(s, path, "gravity", limits::kGravity, out.gravity);
     r.optionalFloat(s, path, "timeStep", limits::kTimeStep, out.timeStep);
     r.optionalInt(s, path, "substeps", limits::kMinSubsteps, limits::kMaxSubsteps, out.substeps);
@@ -63,11 +63,37 @@ void readSettings(Reader& r, const Json& s, const std::string& path, WorldSettin
     if (const Json* solver = Reader::find(s, "solver")) {
         const std::string p = childPath(path, "solver");
         if (r.expectObject(*solver, p)) {
-            r.checkKeys(*solver, p, {"velocityIterations", "positionIterations"});
+            r.checkKeys(*solver, p, {"velocityIterations", "positionIterations", "positionCorrection", "contactHertz",
+                                     "contactDampingRatio", "maxPushVelocity", "baumgarte"});
             r.optionalInt(*solver, p, "velocityIterations", limits::kMinVelocityIterations,
                           limits::kMaxVelocityIterations, out.solver.velocityIterations);
             r.optionalInt(*solver, p, "positionIterations", limits::kMinPositionIterations,
                           limits::kMaxPositionIterations, out.solver.positionIterations);
+            if (const Json* method = Reader::find(*solver, "positionCorrection")) {
+                const std::string mp = childPath(p, "positionCorrection");
+                if (const auto text = r.readString(*method, mp)) {
+                    if (*text == positionCorrectionName(PositionCorrection::SoftStep))
+                        out.solver.positionCorrection = PositionCorrection::SoftStep;
+                    else if (*text == positionCorrectionName(PositionCorrection::Baumgarte))
+                        out.solver.positionCorrection = PositionCorrection::Baumgarte;
+                    else
+                        r.error(mp, "unknown position correction '" + *text + "' (expected softStep or baumgarte)");
+                }
+            }
+            r.optionalFloat(*solver, p, "contactHertz", limits::kContactHertz, out.solver.contactHertz);
+            r.optionalFloat(*solver, p, "contactDampingRatio", limits::kDampingRatio, out.solver.contactDampingRatio);
+            r.optionalFloat(*solver, p, "maxPushVelocity", limits::kPushVelocity, out.solver.maxPushVelocity);
+            r.optionalFloat(*solver, p, "baumgarte", limits::kBaumgarte, out.solver.baumgarte);
+        }
+    }
+    if (const Json* contact = Reader::find(s, "contact")) {
+        const std::string p = childPath(path, "contact");
+        if (r.expectObject(*contact, p)) {
+            r.checkKeys(*contact, p, {"speculativeDistance", "linearSlop", "restitutionThreshold"});
+            r.optionalFloat(*contact, p, "speculativeDistance", limits::kContactDistance, out.contact.speculativeDistance);
+            r.optionalFloat(*contact, p, "linearSlop", limits::kContactDistance, out.contact.linearSlop);
+            r.optionalFloat(*contact, p, "restitutionThreshold", limits::kRestitutionThreshold,
+                            out.contact.restitutionThreshold);
         }
     }
     if (const Json* damping = Reader::find(s, "damping")) {
@@ -299,7 +325,15 @@ OrderedJson settingsJson(const WorldSettings& s) {
     j["timeStep"] = number(s.timeStep);
     j["substeps"] = s.substeps;
     j["solver"] = {{"velocityIterations", s.solver.velocityIterations},
-                   {"positionIterations", s.solver.positionIterations}};
+                   {"positionIterations", s.solver.positionIterations},
+                   {"positionCorrection", positionCorrectionName(s.solver.positionCorrection)},
+                   {"contactHertz", number(s.solver.contactHertz)},
+                   {"contactDampingRatio", number(s.solver.contactDampingRatio)},
+                   {"maxPushVelocity", number(s.solver.maxPushVelocity)},
+                   {"baumgarte", number(s.solver.baumgarte)}};
+    j["contact"] = {{"speculativeDistance", number(s.contact.speculativeDistance)},
+                    {"linearSlop", number(s.contact.linearSlop)},
+                    {"restitutionThreshold", number(s.contact.restitutionThreshold)}};
     j["damping"] = {{"linear", number(s.damping.linear)}, {"angular", number(s.damping.angular)}};
     j["sleep"] = {{"enabled", s.sleep.enabled},
                   {"linearVelocity", number(s.sleep.linearVelocity)},

@@ -1,5 +1,6 @@
 #include "simcore/world/world.h"
 
+#include "simcore/collision/ray_cast.h"
 #include "simcore/dynamics/integrator.h"
 
 #include <cmath>
@@ -186,6 +187,7 @@ void World::step() {
         {
             ScopedStageTimer timer(slot(Stage::BroadPhase));
             updateBroadPhase(settings_.timeStep);
+            proxiesStale_ = false;
         }
         {
             ScopedStageTimer timer(slot(Stage::NarrowPhase));
@@ -238,6 +240,8 @@ void World::step() {
         islands_.sleepRestingIslands(bodies_, settings_.sleep, settings_.timeStep,
                                      [this](std::size_t i) { setAwake(i, false); });
     }
+
+    proxiesStale_ = proxiesStale_ || (!contacts && activity.anyAwakeDynamic);
 
     if (gravity) countEffect(Effect::Gravity);
     if (damping) countEffect(Effect::Damping);
@@ -404,6 +408,29 @@ Vec3 World::angularMomentum() const {
         l += glm::cross(bodies_.centerOfMass[i], bodies_.mass[i] * bodies_.linearVelocity[i]) + spin;
     }
     return l;
+}
+
+std::optional<WorldRayHit> World::castRay(const Vec3& origin, const Vec3& direction, float maxFraction) const {
+    std::optional<WorldRayHit> closest;
+    const RayCastInput ray{origin, direction, maxFraction};
+    auto testBody = [&](std::size_t i, float currentMax) {
+        const RayCastInput clipped{ray.origin, ray.direction, currentMax};
+        if (const auto hit = rayCastShape(bodies_.shape[i], bodies_.transform(i), clipped)) {
+            closest = WorldRayHit{bodies_.idAt(i), hit->fraction, hit->point, hit->normal};
+            return hit->fraction;
+        }
+        return currentMax;
+    };
+    if (proxiesStale_) {
+        // The broad phase has not followed the bodies (contacts are off): test every body.
+        float currentMax = maxFraction;
+        for (std::size_t i = 0; i < bodies_.size(); ++i) currentMax = testBody(i, currentMax);
+    } else {
+        broadPhase_.tree().rayCast(origin, direction, maxFraction, [&](ProxyId proxy, float currentMax) {
+            return testBody(bodies_.denseIndexOfSlot(broadPhase_.userData(proxy)), currentMax);
+        });
+    }
+    return closest;
 }
 
 std::optional<NonFiniteBody> World::findNonFiniteBody() const {

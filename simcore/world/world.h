@@ -24,6 +24,13 @@ struct EffectUsage {
     bool ran(Effect e) const { return stepsRun[static_cast<int>(e)] > 0; }
 };
 
+struct WorldRayHit {
+    BodyId body;
+    float fraction = 0.0f;  // along the ray: point = origin + fraction * direction
+    Vec3 point{0.0f};       // world frame (m)
+    Vec3 normal{0.0f};      // unit, outward from the body at the point
+};
+
 struct NonFiniteBody {
     BodyId id;
     std::string name;
@@ -77,6 +84,10 @@ public:
 
     std::optional<NonFiniteBody> findNonFiniteBody() const;
 
+    // Closest body hit by the ray origin + t * direction, t in [0, maxFraction]. Rays starting
+    // inside a body do not hit it. Candidates come from the broad phase.
+    std::optional<WorldRayHit> castRay(const Vec3& origin, const Vec3& direction, float maxFraction = 1.0f) const;
+
     const StepProfile& lastStepProfile() const { return lastProfile_; }
     const EffectUsage& effectUsage() const { return effectUsage_; }
     std::uint64_t stepCount() const { return stepCount_; }
@@ -109,6 +120,7 @@ private:
     ContactSolver contactSolver_;
     Islands islands_;
     std::vector<BodyPair> newPairs_;  // scratch, reused every step
+    bool proxiesStale_ = false;       // bodies moved while the broad phase did not run
     StepProfile lastProfile_;
     EffectUsage effectUsage_;
     std::uint64_t stepCount_ = 0;
