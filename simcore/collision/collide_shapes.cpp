@@ -28,17 +28,30 @@ constexpr int kCylinderCapPoints = 8;
 
 // ---- Contact candidates and manifold reduction --------------------------------------------------
 
+// Plain data without initialisers: the candidate buffer below is written before it is read, so
+// constructing a Contacts costs nothing (no 2 KB zero fill per call).
 struct Candidate {
-    Vec3 pointA{0.0f};
-    Vec3 pointB{0.0f};
-    float separation = 0.0f;
-    std::uint32_t featureId = 0;
+    Vec3 pointA;
+    Vec3 pointB;
+    float separation;
+    std::uint32_t featureId;
 };
 
 struct Contacts {
     Vec3 normal{0.0f, 1.0f, 0.0f};
-    std::array<Candidate, kMaxClipVertices> items{};
     int count = 0;
+    Candidate items[kMaxClipVertices];
+
+    Contacts() = default;
+    Contacts(const Contacts& other) : normal(other.normal), count(other.count) {
+        std::copy(other.items, other.items + other.count, items);
+    }
+    Contacts& operator=(const Contacts& other) {
+        normal = other.normal;
+        count = other.count;
+        std::copy(other.items, other.items + other.count, items);
+        return *this;
+    }
 
     void add(const Vec3& pointA, const Vec3& pointB, float separation, std::uint32_t featureId) {
         if (count < kMaxClipVertices) items[count++] = {pointA, pointB, separation, featureId};
@@ -491,8 +504,8 @@ EdgeQuery queryEdges(const Polyhedron& a, const Polyhedron& b, const Transform& 
 }
 
 struct ClipVertex {
-    Vec3 point{0.0f};
-    std::uint32_t id = 0;  // low byte: incident vertex; next byte: 1 + clip edge that made it
+    Vec3 point;
+    std::uint32_t id;  // low byte: incident vertex; next byte: 1 + clip edge that made it
 };
 using ClipPolygon = std::array<ClipVertex, kMaxClipVertices>;
 
@@ -500,8 +513,8 @@ using ClipPolygon = std::array<ClipVertex, kMaxClipVertices>;
 struct ReferenceFace {
     Vec3 normal{0.0f};
     float offset = 0.0f;
-    std::array<Vec3, kMaxClipVertices> sideNormals{};
-    std::array<float, kMaxClipVertices> sideOffsets{};
+    std::array<Vec3, kMaxClipVertices> sideNormals;   // only the first sideCount are set
+    std::array<float, kMaxClipVertices> sideOffsets;
     int sideCount = 0;
 };
 
@@ -601,6 +614,230 @@ void collideGeneric(const Shape& a, const Transform& ta, const Shape& b, const T
     contacts.add(query.pointA, query.pointB, separation, 0);
 }
 
+// ---- Box-box: dedicated SAT -----------------------------------------------------------------------
+//
+// The same decisions as the polyhedron path (same axes, tolerances, reference/incident faces,
+// clip order and feature ids), computed from the relative rotation matrix: the 6 face axes and 9
+// edge-cross axes in closed form, the incident face straight from the reference normal, and the
+// incident quad clipped against the reference face's 4 side planes in the reference box's frame,
+// where those planes are axis-aligned.
+
+// Corner i (0..3) of box face f (2k: +axis k, 2k+1: -axis k), CCW about the outward normal; the
+// same order as Polyhedron::faceVertex.
+inline Vec3 boxFaceVertex(const Vec3& h, int f, int i) {
+    const int axis = f >> 1;
+    const bool positive = (f & 1) == 0;
+    const int corner = positive ? i : 3 - i;
+    const int u = (axis + 1) % 3;
+    const int v = (axis + 2) % 3;
+    Vec3 p;
+    p[axis] = positive ? h[axis] : -h[axis];
+    p[u] = (corner == 1 || corner == 2) ? h[u] : -h[u];
+    p[v] = (corner >= 2) ? h[v] : -h[v];
+    return p;
+}
+
+// Rotation matrix of a unit quaternion, columns = local axes in the world.
+inline Mat3 rotationMatrix(const Quat& q) { return glm::mat3_cast(q); }
+
+void collideBoxBox(const Shape& a, const Transform& ta, const Shape& b, const Transform& tb, float spec,
+                   Contacts& contacts) {
+    const Vec3& hA = a.halfExtents;
+    const Vec3& hB = b.halfExtents;
+    const Mat3 ra = rotationMatrix(ta.rotation);
+    const Mat3 rb = rotationMatrix(tb.rotation);
+    const Vec3 d = tb.position - ta.position;
+
+    // c[i][j] = B's axis j along A's axis i; |c| with no epsilon (the parallel edge axes are skipped).
+    float c[3][3], absC[3][3];
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+            c[i][j] = glm::dot(ra[i], rb[j]);
+            absC[i][j] = std::abs(c[i][j]);
+        }
+    }
+    const Vec3 t(glm::dot(ra[0], d), glm::dot(ra[1], d), glm::dot(ra[2], d));     // B's centre in A's frame
+    const Vec3 u(-glm::dot(rb[0], d), -glm::dot(rb[1], d), -glm::dot(rb[2], d));  // A's centre in B's frame
+
+    // A's faces. Face 2i (+axis) wins the tie with face 2i+1.
+    float faceASeparation = -std::numeric_limits<float>::max();
+    int faceA = -1;
+    for (int i = 0; i < 3; ++i) {
+        const float reach = hA[i] + hB[0] * absC[i][0] + hB[1] * absC[i][1] + hB[2] * absC[i][2];
+        const float positive = t[i] - reach;
+        const float negative = -t[i] - reach;
+        if (positive > faceASeparation) faceASeparation = positive, faceA = 2 * i;
+        if (negative > faceASeparation) faceASeparation = negative, faceA = 2 * i + 1;
+    }
+    if (faceASeparation > spec) return;
+    float faceBSeparation = -std::numeric_limits<float>::max();
+    int faceB = -1;
+    for (int j = 0; j < 3; ++j) {
+        const float reach = hB[j] + hA[0] * absC[0][j] + hA[1] * absC[1][j] + hA[2] * absC[2][j];
+        const float positive = u[j] - reach;
+        const float negative = -u[j] - reach;
+        if (positive > faceBSeparation) faceBSeparation = positive, faceB = 2 * j;
+        if (negative > faceBSeparation) faceBSeparation = negative, faceB = 2 * j + 1;
+    }
+    if (faceBSeparation > spec) return;
+
+    // Edge axes cross(A axis i, B axis j), in A's frame; nearly parallel edges are left to the faces.
+    float edgeSeparation = -std::numeric_limits<float>::max();
+    int edgeI = -1;
+    int edgeJ = -1;
+    Vec3 edgeAxis(0.0f);
+    for (int j = 0; j < 3; ++j) {
+        const Vec3 bj(c[0][j], c[1][j], c[2][j]);
+        for (int i = 0; i < 3; ++i) {
+            const int i1 = i == 2 ? 0 : i + 1;
+            const int i2 = i == 0 ? 2 : i - 1;
+            // cross(e_i, bj): zero along i, -bj[i2] along i1, bj[i1] along i2.
+            Vec3 axis(0.0f);
+            axis[i1] = -bj[i2];
+            axis[i2] = bj[i1];
+            const float length2 = axis[i1] * axis[i1] + axis[i2] * axis[i2];
+            if (length2 < 0.005f * 0.005f) continue;
+            const float reachA = hA[i1] * std::abs(axis[i1]) + hA[i2] * std::abs(axis[i2]);
+            const int j1 = j == 2 ? 0 : j + 1;
+            const int j2 = j == 0 ? 2 : j - 1;
+            const Vec3 bj1(c[0][j1], c[1][j1], c[2][j1]);
+            const Vec3 bj2(c[0][j2], c[1][j2], c[2][j2]);
+            const float reachB = hB[j1] * std::abs(glm::dot(axis, bj1)) + hB[j2] * std::abs(glm::dot(axis, bj2));
+            const float inverseLength = 1.0f / std::sqrt(length2);
+            const float separation = (std::abs(glm::dot(axis, t)) - reachA - reachB) * inverseLength;
+            if (separation > edgeSeparation) {
+                edgeSeparation = separation;
+                edgeI = i;
+                edgeJ = j;
+                edgeAxis = axis * inverseLength;
+            }
+        }
+    }
+    if (edgeI >= 0 && edgeSeparation > spec) return;
+
+    const float bestFace = std::max(faceASeparation, faceBSeparation);
+    const bool edgeWins = edgeI >= 0 &&
+        edgeSeparation > bestFace + kEdgeRelativeTolerance * std::abs(bestFace) + kEdgeAbsoluteTolerance;
+    if (edgeWins) {
+        const Vec3 n = glm::dot(edgeAxis, t) >= 0.0f ? edgeAxis : -edgeAxis;  // A's frame, A to B
+        // A's edge along axis i farthest along n; B's edge along axis j farthest along -n.
+        const int i1 = (edgeI + 1) % 3, i2 = (edgeI + 2) % 3;
+        const bool posU = n[i1] > 0.0f, posV = n[i2] > 0.0f;
+        Vec3 p0;
+        p0[i1] = posU ? hA[i1] : -hA[i1];
+        p0[i2] = posV ? hA[i2] : -hA[i2];
+        Vec3 p1 = p0;
+        p0[edgeI] = -hA[edgeI];
+        p1[edgeI] = hA[edgeI];
+        const int j1 = (edgeJ + 1) % 3, j2 = (edgeJ + 2) % 3;
+        const float nB1 = n.x * c[0][j1] + n.y * c[1][j1] + n.z * c[2][j1];
+        const float nB2 = n.x * c[0][j2] + n.y * c[1][j2] + n.z * c[2][j2];
+        const bool posUB = nB1 < 0.0f, posVB = nB2 < 0.0f;
+        Vec3 q0;
+        q0[j1] = posUB ? hB[j1] : -hB[j1];
+        q0[j2] = posVB ? hB[j2] : -hB[j2];
+        Vec3 q1 = q0;
+        q0[edgeJ] = -hB[edgeJ];
+        q1[edgeJ] = hB[edgeJ];
+        Vec3 onA, onB;
+        closestPointsOfSegments(ta.position + ra * p0, ta.position + ra * p1, tb.position + rb * q0,
+                                tb.position + rb * q1, onA, onB);
+        contacts.normal = ra * n;
+        const float separation = glm::dot(onB - onA, contacts.normal);
+        if (separation <= spec) {
+            const std::uint32_t edgeA = std::uint32_t(4 * edgeI + (posU ? 1 : 0) + (posV ? 2 : 0));
+            const std::uint32_t edgeB = std::uint32_t(4 * edgeJ + (posUB ? 1 : 0) + (posVB ? 2 : 0));
+            contacts.add(onA, onB, separation, 0x40000000u | (edgeA << 12) | edgeB);
+        }
+        return;
+    }
+
+    const bool referenceIsA =
+        !(faceBSeparation > faceASeparation + kFaceRelativeTolerance * std::abs(faceASeparation) + kFaceAbsoluteTolerance);
+    // Incident box seen from the reference box: m[j] = incident axis j, p = incident centre.
+    Mat3 m;
+    Vec3 p;
+    if (referenceIsA) {
+        for (int j = 0; j < 3; ++j) m[j] = Vec3(c[0][j], c[1][j], c[2][j]);
+        p = t;
+    } else {
+        for (int j = 0; j < 3; ++j) m[j] = Vec3(c[j][0], c[j][1], c[j][2]);
+        p = u;
+    }
+    const Vec3& hRef = referenceIsA ? hA : hB;
+    const Vec3& hInc = referenceIsA ? hB : hA;
+    const Mat3& rRef = referenceIsA ? ra : rb;
+    const Vec3& refPosition = referenceIsA ? ta.position : tb.position;
+    const int refFace = referenceIsA ? faceA : faceB;
+    const int k = refFace >> 1;
+    const float sign = (refFace & 1) == 0 ? 1.0f : -1.0f;
+
+    // Incident face: the most anti-parallel to the reference normal (first best in face order).
+    int incFace = 0;
+    {
+        float alignment = -std::numeric_limits<float>::max();
+        for (int j = 0; j < 3; ++j) {
+            const float along = -sign * m[j][k];  // incident axis j against the reference normal
+            if (along > alignment) alignment = along, incFace = 2 * j;
+            if (-along > alignment) alignment = -along, incFace = 2 * j + 1;
+        }
+    }
+
+    // The incident quad in the reference frame, clipped against the side planes of the reference
+    // face, in Polyhedron order: positive face -v, +u, +v, -u; negative face +v, +u, -v, -u.
+    // (A convex quad gains at most one vertex per plane; the bound only guards against round-off.)
+    constexpr int kBoxClipCapacity = 32;
+    ClipVertex bufferA[kBoxClipCapacity], bufferB[kBoxClipCapacity];
+    for (int i = 0; i < 4; ++i) bufferA[i] = {p + m * boxFaceVertex(hInc, incFace, i), std::uint32_t(i)};
+    const int ku = (k + 1) % 3, kv = (k + 2) % 3;
+    const int sideAxis[4] = {kv, ku, kv, ku};
+    const float sideSign[4] = {-sign, 1.0f, sign, -1.0f};
+    ClipVertex* in = bufferA;
+    ClipVertex* out = bufferB;
+    int count = 4;
+    for (int s = 0; s < 4 && count > 0; ++s) {
+        const int axis = sideAxis[s];
+        const float sgn = sideSign[s];
+        const float limit = hRef[axis];
+        int outCount = 0;
+        for (int i = 0; i < count; ++i) {
+            const ClipVertex& current = in[i];
+            const ClipVertex& next = in[i + 1 == count ? 0 : i + 1];
+            const float dc = sgn * current.point[axis] - limit;
+            const float dn = sgn * next.point[axis] - limit;
+            if (dc <= 0.0f && outCount < kBoxClipCapacity) out[outCount++] = current;
+            if (((dc < 0.0f && dn > 0.0f) || (dc > 0.0f && dn < 0.0f)) && outCount < kBoxClipCapacity) {
+                const float f = dc / (dc - dn);
+                out[outCount++] = {current.point + f * (next.point - current.point),
+                                   (std::uint32_t(s + 1) << 8) | (current.id & 0xFFu)};
+            }
+        }
+        std::swap(in, out);
+        count = outCount;
+    }
+
+    const Vec3 normalWorld = sign * rRef[k];
+    contacts.normal = referenceIsA ? normalWorld : -normalWorld;
+    const std::uint32_t idBase = (referenceIsA ? 0u : 0x80000000u) | (std::uint32_t(refFace & 0x7F) << 24) |
+                                 (std::uint32_t(incFace & 0xFF) << 16);
+    const float faceLevel = sign * hRef[k];
+    for (int i = 0; i < count; ++i) {
+        const Vec3& q = in[i].point;
+        const float separation = sign * q[k] - hRef[k];
+        if (separation > spec) continue;
+        Vec3 onReference = q;
+        onReference[k] = faceLevel;
+        const Vec3 worldIncident = refPosition + rRef * q;
+        const Vec3 worldReference = refPosition + rRef * onReference;
+        if (referenceIsA) {
+            contacts.add(worldReference, worldIncident, separation, idBase | in[i].id);
+        } else {
+            contacts.add(worldIncident, worldReference, separation, idBase | in[i].id);
+        }
+    }
+    if (contacts.count == 0) collideGeneric(a, ta, b, tb, spec, contacts);
+}
+
 void collidePolyhedra(const Shape& a, const Transform& ta, const Shape& b, const Transform& tb, float spec,
                       Contacts& contacts) {
     const Polyhedron polyA(a);
@@ -688,6 +925,121 @@ void collidePolyhedronCapsule(const Shape& a, const Transform& ta, const Shape& 
     const Polyhedron poly(a);
     if (contacts.count == 0 || !poly.valid()) return;
     const Segment segment = capsuleSegment(b, tb);
+    addSegmentOnFace(poly, ta, contacts.normal, segment.p0, segment.p1, b.radius, spec, contacts);
+}
+
+// Cylinder (A) and sphere (B), in closed form in the cylinder's frame: the closest point of the
+// solid cylinder, or, with the centre inside, the nearer of the side and the cap it is under.
+void collideCylinderSphere(const Shape& a, const Transform& ta, const Shape& b, const Transform& tb, float spec,
+                           Contacts& contacts) {
+    const Vec3 p = ta.applyInverse(tb.position);
+    const float radial = std::sqrt(p.x * p.x + p.z * p.z);
+    Vec3 onCylinder = p;
+    if (radial > a.radius) {
+        const float scale = a.radius / radial;
+        onCylinder.x *= scale;
+        onCylinder.z *= scale;
+    }
+    onCylinder.y = std::clamp(p.y, -a.halfHeight, a.halfHeight);
+    const Vec3 outside = p - onCylinder;
+    const float outsideDistance = glm::length(outside);
+    Vec3 localNormal;
+    float separation;
+    if (outsideDistance > 1e-6f) {
+        localNormal = outside / outsideDistance;
+        separation = outsideDistance - b.radius;
+    } else {
+        // Inside: leave through the nearer of the cap and the side.
+        const float toCap = a.halfHeight - std::abs(p.y);
+        const float toSide = a.radius - radial;
+        onCylinder = p;
+        if (toCap <= toSide || radial <= 1e-6f) {
+            const float sign = p.y >= 0.0f ? 1.0f : -1.0f;
+            localNormal = Vec3(0.0f, sign, 0.0f);
+            onCylinder.y = sign * a.halfHeight;
+            separation = -toCap - b.radius;
+        } else {
+            localNormal = Vec3(p.x / radial, 0.0f, p.z / radial);
+            onCylinder.x = localNormal.x * a.radius;
+            onCylinder.z = localNormal.z * a.radius;
+            separation = -toSide - b.radius;
+        }
+    }
+    if (separation > spec) return;
+    contacts.normal = ta.rotate(localNormal);
+    contacts.add(ta.apply(onCylinder), tb.position - b.radius * contacts.normal, separation, 0);
+}
+
+// Closest points of a segment and a box (box frame) when the segment lies outside the box; false
+// when it touches or crosses the box. The distance is attained at an end of the segment against
+// the box or at the segment against one of the 12 edges (an interior point facing a face interior
+// only happens with the segment parallel to the face, where an edge or an end attains it too).
+bool closestSegmentBox(const Vec3& h, const Vec3& p0, const Vec3& p1, Vec3& onBox, Vec3& onSegment, float& distance2) {
+    // Slab test: does the segment meet the box?
+    {
+        float t0 = 0.0f, t1 = 1.0f;
+        const Vec3 delta = p1 - p0;
+        bool meets = true;
+        for (int i = 0; i < 3 && meets; ++i) {
+            if (std::abs(delta[i]) < 1e-12f) {
+                if (std::abs(p0[i]) > h[i]) meets = false;
+            } else {
+                const float inverse = 1.0f / delta[i];
+                float enter = (-h[i] - p0[i]) * inverse;
+                float leave = (h[i] - p0[i]) * inverse;
+                if (enter > leave) std::swap(enter, leave);
+                t0 = std::max(t0, enter);
+                t1 = std::min(t1, leave);
+                if (t0 > t1) meets = false;
+            }
+        }
+        if (meets) return false;
+    }
+    const auto consider = [&](const Vec3& box, const Vec3& segment) {
+        const float d2 = lengthSquared(segment - box);
+        if (d2 < distance2) distance2 = d2, onBox = box, onSegment = segment;
+    };
+    distance2 = std::numeric_limits<float>::max();
+    consider(glm::clamp(p0, -h, h), p0);
+    consider(glm::clamp(p1, -h, h), p1);
+    for (int axis = 0; axis < 3; ++axis) {
+        const int u = (axis + 1) % 3;
+        const int v = (axis + 2) % 3;
+        for (int corner = 0; corner < 4; ++corner) {
+            Vec3 e0;
+            e0[u] = (corner & 1) ? h[u] : -h[u];
+            e0[v] = (corner & 2) ? h[v] : -h[v];
+            Vec3 e1 = e0;
+            e0[axis] = -h[axis];
+            e1[axis] = h[axis];
+            Vec3 onSeg, onEdge;
+            closestPointsOfSegments(p0, p1, e0, e1, onSeg, onEdge);
+            consider(onEdge, onSeg);
+        }
+    }
+    return distance2 > 1e-12f;
+}
+
+// Box (A) and capsule (B): closed-form closest points of the box and the capsule's segment while
+// the segment is outside the box (the resting regime), GJK/EPA once it reaches into the box; then
+// the segment clipped against the face when the capsule lies flat on it.
+void collideBoxCapsule(const Shape& a, const Transform& ta, const Shape& b, const Transform& tb, float spec,
+                       Contacts& contacts) {
+    const Segment segment = capsuleSegment(b, tb);
+    Vec3 onBox(0.0f), onSegment(0.0f);
+    float distance2 = 0.0f;
+    if (closestSegmentBox(a.halfExtents, ta.applyInverse(segment.p0), ta.applyInverse(segment.p1), onBox, onSegment,
+                          distance2)) {
+        const float distance = std::sqrt(distance2);
+        const float separation = distance - b.radius;
+        if (separation > spec) return;
+        contacts.normal = ta.rotate((onSegment - onBox) / distance);
+        contacts.add(ta.apply(onBox), ta.apply(onSegment) - b.radius * contacts.normal, separation, 0);
+    } else {
+        collideGeneric(a, ta, b, tb, spec, contacts);
+    }
+    if (contacts.count == 0) return;
+    const Polyhedron poly(a);
     addSegmentOnFace(poly, ta, contacts.normal, segment.p0, segment.p1, b.radius, spec, contacts);
 }
 
@@ -786,12 +1138,12 @@ struct Dispatch {
 // Rows: A's type, columns: B's type, in ShapeType order (sphere, box, capsule, cylinder, hull).
 constexpr Dispatch kDispatch[kShapeTypeCount][kShapeTypeCount] = {
     {{collideSphereSphere, false}, {collideBoxSphere, true}, {collideSphereCapsule, false},
-     {collideGeneric, false}, {collideGeneric, false}},
-    {{collideBoxSphere, false}, {collidePolyhedra, false}, {collidePolyhedronCapsule, false},
+     {collideCylinderSphere, true}, {collideGeneric, false}},
+    {{collideBoxSphere, false}, {collideBoxBox, false}, {collideBoxCapsule, false},
      {collidePolyhedronCylinder, false}, {collidePolyhedra, false}},
-    {{collideSphereCapsule, true}, {collidePolyhedronCapsule, true}, {collideCapsuleCapsule, false},
+    {{collideSphereCapsule, true}, {collideBoxCapsule, true}, {collideCapsuleCapsule, false},
      {collideGeneric, false}, {collidePolyhedronCapsule, true}},
-    {{collideGeneric, false}, {collidePolyhedronCylinder, true}, {collideGeneric, false},
+    {{collideCylinderSphere, false}, {collidePolyhedronCylinder, true}, {collideGeneric, false},
      {collideCylinderCylinder, false}, {collidePolyhedronCylinder, true}},
     {{collideGeneric, false}, {collidePolyhedra, false}, {collidePolyhedronCapsule, false},
      {collidePolyhedronCylinder, false}, {collidePolyhedra, false}},

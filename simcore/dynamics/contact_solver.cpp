@@ -18,16 +18,15 @@ void tangentBasis(const Vec3& n, Vec3& t1, Vec3& t2) {
     t2 = Vec3(b, sign + n.y * n.y * a, -n.y);
 }
 
-float effectiveMass(float inverseMassSum, const Mat3& inverseInertiaA, const Mat3& inverseInertiaB,
-                    const Vec3& anchorA, const Vec3& anchorB, const Vec3& direction) {
-    const Vec3 ra = glm::cross(anchorA, direction);
-    const Vec3 rb = glm::cross(anchorB, direction);
-    const float k = inverseMassSum + glm::dot(ra, inverseInertiaA * ra) + glm::dot(rb, inverseInertiaB * rb);
-    return k > 0.0f ? 1.0f / k : 0.0f;
-}
-
-struct Velocities {
+// Velocities of a constraint's two bodies, loaded once per constraint and written back after.
+struct BodyPairVelocity {
     Vec3 linearA, angularA, linearB, angularB;
+
+    // Relative velocity of B with respect to A along a row.
+    float along(const Vec3& axis, const Vec3& angularJacobianA, const Vec3& angularJacobianB) const {
+        return glm::dot(linearB - linearA, axis) + glm::dot(angularB, angularJacobianB) -
+               glm::dot(angularA, angularJacobianA);
+    }
 };
 
 }  // namespace
@@ -68,16 +67,17 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const BodyStor
         c.bodyB = static_cast<std::uint32_t>(b);
         c.inverseMassA = movesA ? bodies.inverseMass[a] : 0.0f;
         c.inverseMassB = movesB ? bodies.inverseMass[b] : 0.0f;
-        c.inverseInertiaA = movesA ? bodies.inverseInertiaWorld[a] : Mat3(0.0f);
-        c.inverseInertiaB = movesB ? bodies.inverseInertiaWorld[b] : Mat3(0.0f);
-        c.normal = manifold.normal;
-        tangentBasis(c.normal, c.tangent1, c.tangent2);
+        const Mat3 inverseInertiaA = movesA ? bodies.inverseInertiaWorld[a] : Mat3(0.0f);
+        const Mat3 inverseInertiaB = movesB ? bodies.inverseInertiaWorld[b] : Mat3(0.0f);
+        c.axes[kNormal] = manifold.normal;
+        tangentBasis(manifold.normal, c.axes[kTangent1], c.axes[kTangent2]);
         // With friction off (or zero for this pair) no friction rows are built at all.
         c.friction = params.friction ? contact.friction : 0.0f;
         c.restitution = params.restitution ? contact.restitution : 0.0f;
         usesFriction_ = usesFriction_ || c.friction > 0.0f;
         usesRestitution_ = usesRestitution_ || c.restitution > 0.0f;
         c.pointCount = manifold.pointCount;
+        const int rows = c.friction > 0.0f ? kRowCount : 1;
 
         const float inverseMassSum = c.inverseMassA + c.inverseMassB;
         const Quat inverseRotationA = glm::conjugate(bodies.orientation[a]);
@@ -88,48 +88,66 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const BodyStor
             // Both anchors at the midpoint: then the separation's change is just the change of
             // (anchorB - anchorA) along the normal as the bodies move.
             const Vec3 mid = 0.5f * (mp.pointA + mp.pointB);
-            p.anchorA = mid - bodies.centerOfMass[a];
-            p.anchorB = mid - bodies.centerOfMass[b];
-            p.localAnchorA = inverseRotationA * p.anchorA;
-            p.localAnchorB = inverseRotationB * p.anchorB;
+            const Vec3 anchorA = mid - bodies.centerOfMass[a];
+            const Vec3 anchorB = mid - bodies.centerOfMass[b];
+            p.localAnchorA = inverseRotationA * anchorA;
+            p.localAnchorB = inverseRotationB * anchorB;
             p.baseSeparation = mp.separation;
-            p.normalMass = effectiveMass(inverseMassSum, c.inverseInertiaA, c.inverseInertiaB, p.anchorA, p.anchorB, c.normal);
-            const ContactImpulse& warm = contact.impulses[i];
-            p.normalImpulse = warm.normal;
-            if (c.friction > 0.0f) {
-                p.tangentMass1 = effectiveMass(inverseMassSum, c.inverseInertiaA, c.inverseInertiaB, p.anchorA, p.anchorB, c.tangent1);
-                p.tangentMass2 = effectiveMass(inverseMassSum, c.inverseInertiaA, c.inverseInertiaB, p.anchorA, p.anchorB, c.tangent2);
-                p.tangentImpulse1 = warm.tangent1;
-                p.tangentImpulse2 = warm.tangent2;
-            } else {
-                p.tangentMass1 = p.tangentMass2 = p.tangentImpulse1 = p.tangentImpulse2 = 0.0f;
+            for (int row = 0; row < rows; ++row) {
+                p.angularA[row] = glm::cross(anchorA, c.axes[row]);
+                p.angularB[row] = glm::cross(anchorB, c.axes[row]);
+                p.weightedA[row] = inverseInertiaA * p.angularA[row];
+                p.weightedB[row] = inverseInertiaB * p.angularB[row];
+                const float k = inverseMassSum + glm::dot(p.angularA[row], p.weightedA[row]) +
+                                glm::dot(p.angularB[row], p.weightedB[row]);
+                p.mass[row] = k > 0.0f ? 1.0f / k : 0.0f;
             }
+            const ContactImpulse& warm = contact.impulses[i];
+            p.impulse[kNormal] = warm.normal;
+            p.impulse[kTangent1] = rows > 1 ? warm.tangent1 : 0.0f;
+            p.impulse[kTangent2] = rows > 1 ? warm.tangent2 : 0.0f;
             p.maxNormalImpulse = 0.0f;
-            const Vec3 dv = bodies.linearVelocity[b] + glm::cross(bodies.angularVelocity[b], p.anchorB) -
-                            bodies.linearVelocity[a] - glm::cross(bodies.angularVelocity[a], p.anchorA);
-            p.approachVelocity = glm::dot(dv, c.normal);
+            const BodyPairVelocity v{bodies.linearVelocity[a], bodies.angularVelocity[a], bodies.linearVelocity[b],
+                                     bodies.angularVelocity[b]};
+            p.approachVelocity = v.along(c.axes[kNormal], p.angularA[kNormal], p.angularB[kNormal]);
             maxPenetration_ = std::max(maxPenetration_, -mp.separation);
         }
     }
 }
 
+namespace {
+
+// Loads and stores the two bodies' velocities around a constraint's update. Static, kinematic
+// and sleeping bodies have zero inverse mass in the constraint: their write-back is a no-op.
+template <typename Constraint, typename Update>
+void updateVelocities(BodyStorage& bodies, Constraint& c, Update&& update) {
+    BodyPairVelocity v{bodies.linearVelocity[c.bodyA], bodies.angularVelocity[c.bodyA],
+                       bodies.linearVelocity[c.bodyB], bodies.angularVelocity[c.bodyB]};
+    update(v);
+    bodies.linearVelocity[c.bodyA] = v.linearA;
+    bodies.angularVelocity[c.bodyA] = v.angularA;
+    bodies.linearVelocity[c.bodyB] = v.linearB;
+    bodies.angularVelocity[c.bodyB] = v.angularB;
+}
+
+template <typename Constraint, typename Point>
+void applyRow(BodyPairVelocity& v, const Constraint& c, const Point& p, int row, float impulse) {
+    const Vec3 linear = impulse * c.axes[row];
+    v.linearA -= c.inverseMassA * linear;
+    v.angularA -= impulse * p.weightedA[row];
+    v.linearB += c.inverseMassB * linear;
+    v.angularB += impulse * p.weightedB[row];
+}
+
+}  // namespace
+
 void ContactSolver::warmStart(BodyStorage& bodies) const {
     for (const Constraint& c : constraints_) {
-        Vec3 vA = bodies.linearVelocity[c.bodyA], wA = bodies.angularVelocity[c.bodyA];
-        Vec3 vB = bodies.linearVelocity[c.bodyB], wB = bodies.angularVelocity[c.bodyB];
-        for (int i = 0; i < c.pointCount; ++i) {
-            const Point& p = c.points[i];
-            const Vec3 impulse = p.normalImpulse * c.normal + p.tangentImpulse1 * c.tangent1 + p.tangentImpulse2 * c.tangent2;
-            vA -= c.inverseMassA * impulse;
-            wA -= c.inverseInertiaA * glm::cross(p.anchorA, impulse);
-            vB += c.inverseMassB * impulse;
-            wB += c.inverseInertiaB * glm::cross(p.anchorB, impulse);
-        }
-        // Static, kinematic and sleeping bodies have zero inverse mass: writing back is a no-op.
-        bodies.linearVelocity[c.bodyA] = vA;
-        bodies.angularVelocity[c.bodyA] = wA;
-        bodies.linearVelocity[c.bodyB] = vB;
-        bodies.angularVelocity[c.bodyB] = wB;
+        const int rows = c.friction > 0.0f ? kRowCount : 1;
+        updateVelocities(bodies, c, [&](BodyPairVelocity& v) {
+            for (int i = 0; i < c.pointCount; ++i)
+                for (int row = 0; row < rows; ++row) applyRow(v, c, c.points[i], row, c.points[i].impulse[row]);
+        });
     }
 }
 
@@ -139,73 +157,64 @@ void ContactSolver::solve(BodyStorage& bodies, bool useBias) {
     const float maxPush = params_.solver.maxPushVelocity;
 
     for (Constraint& c : constraints_) {
-        Vec3 vA = bodies.linearVelocity[c.bodyA], wA = bodies.angularVelocity[c.bodyA];
-        Vec3 vB = bodies.linearVelocity[c.bodyB], wB = bodies.angularVelocity[c.bodyB];
-        const Vec3 xA = bodies.centerOfMass[c.bodyA], xB = bodies.centerOfMass[c.bodyB];
-        const Quat qA = bodies.orientation[c.bodyA], qB = bodies.orientation[c.bodyB];
+        // Separation now, from how far the anchors moved since prepare: one rotation matrix per
+        // body serves all of the constraint's points.
+        const Mat3 rotationA = glm::mat3_cast(bodies.orientation[c.bodyA]);
+        const Mat3 rotationB = glm::mat3_cast(bodies.orientation[c.bodyB]);
+        const Vec3 offset = bodies.centerOfMass[c.bodyB] - bodies.centerOfMass[c.bodyA];
+        const Vec3& normal = c.axes[kNormal];
 
-        auto apply = [&](const Point& p, const Vec3& impulse) {
-            vA -= c.inverseMassA * impulse;
-            wA -= c.inverseInertiaA * glm::cross(p.anchorA, impulse);
-            vB += c.inverseMassB * impulse;
-            wB += c.inverseInertiaB * glm::cross(p.anchorB, impulse);
-        };
-        auto relativeVelocity = [&](const Point& p) {
-            return vB + glm::cross(wB, p.anchorB) - vA - glm::cross(wA, p.anchorA);
-        };
-
-        for (int i = 0; i < c.pointCount; ++i) {
-            Point& p = c.points[i];
-            // Separation now, from how far the anchors moved since prepare.
-            const Vec3 d = (xB + qB * p.localAnchorB) - (xA + qA * p.localAnchorA);
-            const float separation = p.baseSeparation + glm::dot(d, c.normal);
-
-            float bias = 0.0f, massScale = 1.0f, impulseScale = 0.0f;
-            if (separation > 0.0f) {
-                bias = separation * inverseH;  // speculative: arrive exactly at contact, no earlier
-            } else if (useBias) {
-                if (soft) {
-                    bias = std::max(biasRate_ * separation, -maxPush);
-                    massScale = massScale_;
-                    impulseScale = impulseScale_;
-                } else {
-                    const float overlap = std::min(separation + params_.contact.linearSlop, 0.0f);
-                    bias = std::max(params_.solver.baumgarte * inverseH * overlap, -maxPush);
-                }
-            }
-            const float vn = glm::dot(relativeVelocity(p), c.normal);
-            const float lambda = -p.normalMass * massScale * (vn + bias) - impulseScale * p.normalImpulse;
-            const float accumulated = std::max(p.normalImpulse + lambda, 0.0f);
-            const float delta = accumulated - p.normalImpulse;
-            p.normalImpulse = accumulated;
-            p.maxNormalImpulse = std::max(p.maxNormalImpulse, delta);
-            apply(p, delta * c.normal);
-        }
-
-        if (c.friction > 0.0f) {
+        updateVelocities(bodies, c, [&](BodyPairVelocity& v) {
             for (int i = 0; i < c.pointCount; ++i) {
                 Point& p = c.points[i];
-                const Vec3 dv = relativeVelocity(p);
-                float t1 = p.tangentImpulse1 - p.tangentMass1 * glm::dot(dv, c.tangent1);
-                float t2 = p.tangentImpulse2 - p.tangentMass2 * glm::dot(dv, c.tangent2);
+                const Vec3 d = offset + rotationB * p.localAnchorB - rotationA * p.localAnchorA;
+                const float separation = p.baseSeparation + glm::dot(d, normal);
+
+                float bias = 0.0f, massScale = 1.0f, impulseScale = 0.0f;
+                if (separation > 0.0f) {
+                    bias = separation * inverseH;  // speculative: arrive exactly at contact, no earlier
+                } else if (useBias) {
+                    if (soft) {
+                        bias = std::max(biasRate_ * separation, -maxPush);
+                        massScale = massScale_;
+                        impulseScale = impulseScale_;
+                    } else {
+                        const float overlap = std::min(separation + params_.contact.linearSlop, 0.0f);
+                        bias = std::max(params_.solver.baumgarte * inverseH * overlap, -maxPush);
+                    }
+                }
+                const float vn = v.along(normal, p.angularA[kNormal], p.angularB[kNormal]);
+                const float lambda = -p.mass[kNormal] * massScale * (vn + bias) - impulseScale * p.impulse[kNormal];
+                const float accumulated = std::max(p.impulse[kNormal] + lambda, 0.0f);
+                const float delta = accumulated - p.impulse[kNormal];
+                p.impulse[kNormal] = accumulated;
+                p.maxNormalImpulse = std::max(p.maxNormalImpulse, delta);
+                applyRow(v, c, p, kNormal, delta);
+            }
+            if (c.friction == 0.0f) return;
+            for (int i = 0; i < c.pointCount; ++i) {
+                Point& p = c.points[i];
+                const float limit = c.friction * p.impulse[kNormal];
+                // A point that pushes nothing and holds no friction would clamp to zero again:
+                // skip it (side contacts in piles and pyramids carry no load).
+                if (limit == 0.0f && p.impulse[kTangent1] == 0.0f && p.impulse[kTangent2] == 0.0f) continue;
+                float t1 = p.impulse[kTangent1] -
+                           p.mass[kTangent1] * v.along(c.axes[kTangent1], p.angularA[kTangent1], p.angularB[kTangent1]);
+                float t2 = p.impulse[kTangent2] -
+                           p.mass[kTangent2] * v.along(c.axes[kTangent2], p.angularA[kTangent2], p.angularB[kTangent2]);
                 // Coulomb: the tangential impulse lies in a disc of radius friction * normal impulse.
-                const float limit = c.friction * p.normalImpulse;
                 const float length2 = t1 * t1 + t2 * t2;
                 if (length2 > limit * limit) {
                     const float scale = limit / std::sqrt(length2);
                     t1 *= scale;
                     t2 *= scale;
                 }
-                apply(p, (t1 - p.tangentImpulse1) * c.tangent1 + (t2 - p.tangentImpulse2) * c.tangent2);
-                p.tangentImpulse1 = t1;
-                p.tangentImpulse2 = t2;
+                applyRow(v, c, p, kTangent1, t1 - p.impulse[kTangent1]);
+                applyRow(v, c, p, kTangent2, t2 - p.impulse[kTangent2]);
+                p.impulse[kTangent1] = t1;
+                p.impulse[kTangent2] = t2;
             }
-        }
-
-        bodies.linearVelocity[c.bodyA] = vA;
-        bodies.angularVelocity[c.bodyA] = wA;
-        bodies.linearVelocity[c.bodyB] = vB;
-        bodies.angularVelocity[c.bodyB] = wB;
+        });
     }
 }
 
@@ -213,27 +222,18 @@ void ContactSolver::applyRestitution(BodyStorage& bodies) {
     const float threshold = params_.contact.restitutionThreshold;
     for (Constraint& c : constraints_) {
         if (c.restitution == 0.0f) continue;
-        Vec3 vA = bodies.linearVelocity[c.bodyA], wA = bodies.angularVelocity[c.bodyA];
-        Vec3 vB = bodies.linearVelocity[c.bodyB], wB = bodies.angularVelocity[c.bodyB];
-        for (int i = 0; i < c.pointCount; ++i) {
-            Point& p = c.points[i];
-            // Only points that approached fast enough and actually pushed bounce.
-            if (p.approachVelocity > -threshold || p.maxNormalImpulse == 0.0f) continue;
-            const Vec3 dv = vB + glm::cross(wB, p.anchorB) - vA - glm::cross(wA, p.anchorA);
-            const float vn = glm::dot(dv, c.normal);
-            const float lambda = -p.normalMass * (vn + c.restitution * p.approachVelocity);
-            const float accumulated = std::max(p.normalImpulse + lambda, 0.0f);
-            const Vec3 impulse = (accumulated - p.normalImpulse) * c.normal;
-            p.normalImpulse = accumulated;
-            vA -= c.inverseMassA * impulse;
-            wA -= c.inverseInertiaA * glm::cross(p.anchorA, impulse);
-            vB += c.inverseMassB * impulse;
-            wB += c.inverseInertiaB * glm::cross(p.anchorB, impulse);
-        }
-        bodies.linearVelocity[c.bodyA] = vA;
-        bodies.angularVelocity[c.bodyA] = wA;
-        bodies.linearVelocity[c.bodyB] = vB;
-        bodies.angularVelocity[c.bodyB] = wB;
+        updateVelocities(bodies, c, [&](BodyPairVelocity& v) {
+            for (int i = 0; i < c.pointCount; ++i) {
+                Point& p = c.points[i];
+                // Only points that approached fast enough and actually pushed bounce.
+                if (p.approachVelocity > -threshold || p.maxNormalImpulse == 0.0f) continue;
+                const float vn = v.along(c.axes[kNormal], p.angularA[kNormal], p.angularB[kNormal]);
+                const float lambda = -p.mass[kNormal] * (vn + c.restitution * p.approachVelocity);
+                const float accumulated = std::max(p.impulse[kNormal] + lambda, 0.0f);
+                applyRow(v, c, p, kNormal, accumulated - p.impulse[kNormal]);
+                p.impulse[kNormal] = accumulated;
+            }
+        });
     }
 }
 
@@ -242,7 +242,7 @@ void ContactSolver::storeImpulses(std::vector<Contact>& contacts) const {
         Contact& contact = contacts[c.contactIndex];
         for (int i = 0; i < c.pointCount; ++i) {
             const Point& p = c.points[i];
-            contact.impulses[i] = {p.normalImpulse, p.tangentImpulse1, p.tangentImpulse2};
+            contact.impulses[i] = {p.impulse[kNormal], p.impulse[kTangent1], p.impulse[kTangent2]};
         }
     }
 }

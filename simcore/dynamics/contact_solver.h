@@ -40,12 +40,18 @@ public:
     float maxPenetration() const { return maxPenetration_; }  // at prepare time (m)
 
 private:
+    // Rows of a point: the normal, then the two friction tangents.
+    static constexpr int kNormal = 0, kTangent1 = 1, kTangent2 = 2, kRowCount = 3;
+
     struct Point {
-        Vec3 anchorA, anchorB;            // contact point relative to each centre of mass, world axes, fixed for the step
-        Vec3 localAnchorA, localAnchorB;  // the same in body axes, to track separation as bodies move
-        float baseSeparation = 0.0f;      // separation at prepare, minus the anchors' offset then
-        float normalMass = 0.0f, tangentMass1 = 0.0f, tangentMass2 = 0.0f;
-        float normalImpulse = 0.0f, tangentImpulse1 = 0.0f, tangentImpulse2 = 0.0f;
+        Vec3 localAnchorA, localAnchorB;  // contact point relative to each centre of mass, body axes
+        float baseSeparation = 0.0f;      // separation at prepare (m)
+        // Per row: the angular Jacobians r x axis and their inertia-weighted forms I^-1 (r x axis),
+        // computed once per step so each iteration is dot products and multiply-adds.
+        Vec3 angularA[kRowCount], angularB[kRowCount];
+        Vec3 weightedA[kRowCount], weightedB[kRowCount];
+        float mass[kRowCount] = {};       // effective mass of each row (kg)
+        float impulse[kRowCount] = {};    // accumulated (N s)
         float maxNormalImpulse = 0.0f;    // largest normal impulse this step: did the point push?
         float approachVelocity = 0.0f;    // normal relative velocity at prepare (m/s), for restitution
     };
@@ -53,8 +59,7 @@ private:
         std::uint32_t contactIndex = 0;
         std::uint32_t bodyA = 0, bodyB = 0;  // dense indices
         float inverseMassA = 0.0f, inverseMassB = 0.0f;
-        Mat3 inverseInertiaA{0.0f}, inverseInertiaB{0.0f};
-        Vec3 normal{0.0f}, tangent1{0.0f}, tangent2{0.0f};
+        Vec3 axes[kRowCount];  // normal (from A to B), tangent1, tangent2
         float friction = 0.0f, restitution = 0.0f;
         int pointCount = 0;
         Point points[kMaxManifoldPoints];

@@ -48,7 +48,7 @@ enum class PositionCorrection : std::uint8_t {
 std::string_view positionCorrectionName(PositionCorrection method);  // "softStep", "baumgarte"
 
 struct SolverSettings {
-    int velocityIterations = 1;  // sequential-impulse passes per substep
+    int velocityIterations = 2;  // sequential-impulse passes per substep
     int positionIterations = 1;  // per substep: relax passes (soft step); unused by Baumgarte
     PositionCorrection positionCorrection = PositionCorrection::SoftStep;
     float contactHertz = 60.0f;         // soft-contact stiffness (Hz), capped at a quarter of the substep rate

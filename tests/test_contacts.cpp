@@ -1,0 +1,653 @@
+// Contact physics against closed forms and stability bounds: sliding and sticking on an incline,
+// rolling, elastic and inelastic impacts, stacks that must stand, sleeping and waking, effect
+// switches, no allocation in steady state, and long mixed runs that stay finite and never gain
+// energy. Every world is built in code except the benchmark stacks, whose scene files are the
+// subject. Tolerances are justified where they are asserted: the main error sources are the step
+// (dt = 1/60 s, 4 substeps of h = 1/240 s), the soft contact (a stiff, overdamped spring, so
+// resting contacts sit a little inside each other) and float rounding.
+
+#include "simcore/io/scene_io.h"
+#include "simcore/shapes/convex_hull.h"
+#include "simcore/world/world.h"
+
+#include "support/allocation_counter.h"
+
+#include <QtTest>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <vector>
+
+using namespace simcore;
+
+namespace {
+
+constexpr float kG = 9.81f;
+constexpr float kTheta = kPi / 6.0f;  // 30 degrees
+
+WorldSettings awakeSettings() {
+    WorldSettings s;
+    s.sleep.enabled = false;
+    return s;
+}
+
+int stepsFor(const World& world, float seconds) {
+    return static_cast<int>(std::lround(seconds / world.settings().timeStep));
+}
+
+void run(World& world, float seconds) {
+    for (int i = 0, n = stepsFor(world, seconds); i < n; ++i) world.step();
+}
+
+// Static ground: top face at y = 0.
+BodyId addGround(World& world, float friction = 0.6f, float restitution = 0.0f, float halfSize = 50.0f) {
+    BodyCreationSettings g;
+    g.name = "ground";
+    g.motion = MotionType::Static;
+    g.shape = Shape::box(Vec3(halfSize, 0.5f, halfSize));
+    g.position = Vec3(0.0f, -0.5f, 0.0f);
+    g.friction = friction;
+    g.restitution = restitution;
+    return world.createBody(g);
+}
+
+BodyCreationSettings cube(const Vec3& position, float mass = 1.0f, float halfSize = 0.5f, float friction = 0.6f) {
+    BodyCreationSettings b;
+    b.name = "cube";
+    b.shape = Shape::box(Vec3(halfSize));
+    b.position = position;
+    b.mass = mass;
+    b.friction = friction;
+    return b;
+}
+
+// A static 30 degree ramp (a thin box turned about z, rising towards +x) centred at the origin,
+// with a body resting on its top face 8 m up the slope, exactly touching.
+struct Incline {
+    Quat rotation = glm::angleAxis(kTheta, Vec3(0.0f, 0.0f, 1.0f));
+    Vec3 normal = rotation * Vec3(0.0f, 1.0f, 0.0f);     // (-sin, cos, 0)
+    Vec3 downSlope = rotation * Vec3(-1.0f, 0.0f, 0.0f);  // (-cos, -sin, 0)
+    BodyId body;
+
+    Incline(World& world, const Shape& shape, float offsetAlongNormal, float friction) {
+        BodyCreationSettings ramp;
+        ramp.name = "ramp";
+        ramp.motion = MotionType::Static;
+        ramp.shape = Shape::box(Vec3(12.0f, 0.1f, 2.0f));
+        ramp.orientation = rotation;
+        ramp.friction = friction;
+        world.createBody(ramp);
+
+        BodyCreationSettings b;
+        b.name = "slider";
+        b.shape = shape;
+        b.mass = 1.0f;
+        b.orientation = rotation;
+        b.position = normal * (0.1f + offsetAlongNormal) - downSlope * 8.0f;
+        b.friction = friction;  // both sides the same: the combined sqrt(mu mu) is mu
+        body = world.createBody(b);
+    }
+    float slopeSpeed(const World& world) const { return glm::dot(world.linearVelocity(body), downSlope); }
+};
+
+// Acceleration along the slope from the velocity at t = 0.5 s and t = 1.5 s (past the first
+// contact transient; the velocity difference over 1 s is the mean acceleration).
+float measureSlopeAcceleration(World& world, const Incline& incline) {
+    run(world, 0.5f);
+    const float v0 = incline.slopeSpeed(world);
+    run(world, 1.0f);
+    return incline.slopeSpeed(world) - v0;
+}
+
+// Kinetic + potential energy of the dynamic bodies (potential relative to y = 0, the ground).
+double totalEnergy(const World& world) { return world.kineticEnergy() + world.potentialEnergy(); }
+
+QString vecString(const Vec3& v) { return QString("(%1, %2, %3)").arg(v.x).arg(v.y).arg(v.z); }
+
+}  // namespace
+
+class TestContacts : public QObject {
+    Q_OBJECT
+
+private slots:
+    void boxOnInclineSticksOrSlides_data();
+    void boxOnInclineSticksOrSlides();
+    void sphereRollsWithoutSlipping();
+    void elasticSpheresHeadOn_data();
+    void elasticSpheresHeadOn();
+    void boxWithoutRestitutionDoesNotBounce();
+    void ballReboundsToQuarterHeight();
+    void benchStacksStand_data();
+    void benchStacksStand();
+    void heavyOnLightHolds();
+    void pileSleepsAndWakesWhenHit();
+    void effectSwitches();
+    void restitutionRunsOnlyWhenSomePairBounces();
+    void steadyStateStepDoesNotAllocate();
+    void longMixedRunStaysFiniteAndDoesNotGainEnergy();
+};
+
+// -------------------------------------------------------------------------------------------------
+// 1. Coulomb friction on a 30 degree incline.
+
+void TestContacts::boxOnInclineSticksOrSlides_data() {
+    QTest::addColumn<float>("mu");
+    QTest::addColumn<bool>("sticks");
+    QTest::addColumn<float>("relativeTolerance");
+    // tan 30 = 0.577 < 0.8: static friction holds the box.
+    QTest::newRow("mu 0.8 sticks") << 0.8f << true << 0.0f;
+    // a = g (sin - mu cos) = 3.206 m/s^2. 5 %: the friction impulse is clamped per substep against
+    // a soft normal impulse that is solved with one iteration, so the cone is met only to a few
+    // percent; a wrong combining rule or a missing clamp is off by 20 % or more.
+    QTest::newRow("mu 0.2 slides") << 0.2f << false << 0.05f;
+    // a = g sin = 4.905 m/s^2; nothing but the normal force acts along the slope, so only the
+    // contact's tangential leakage (normal solved at anchors that move within the step) remains: 3 %.
+    QTest::newRow("mu 0 slides freely") << 0.0f << false << 0.03f;
+}
+
+void TestContacts::boxOnInclineSticksOrSlides() {
+    QFETCH(float, mu);
+    QFETCH(bool, sticks);
+    QFETCH(float, relativeTolerance);
+
+    World world(awakeSettings());
+    const Incline incline(world, Shape::box(Vec3(0.25f)), 0.25f, mu);
+    const Vec3 start = world.position(incline.body);
+
+    if (sticks) {
+        run(world, 5.0f);
+        const float displacement = glm::length(world.position(incline.body) - start);
+        qInfo("mu %.1f: moved %.5f m in 5 s", mu, displacement);
+        // 1 cm over 5 s: a sticking box only settles into the soft contact (sub-millimetre);
+        // a slowly creeping one would cover centimetres.
+        QVERIFY2(displacement < 0.01f, qPrintable(QString("box moved %1 m").arg(displacement)));
+        QVERIFY(world.effectUsage().ran(Effect::Friction));
+        return;
+    }
+    const float expected = kG * (std::sin(kTheta) - mu * std::cos(kTheta));
+    const float a = measureSlopeAcceleration(world, incline);
+    qInfo("mu %.1f: a = %.4f m/s^2, expected %.4f (%+.2f %%)", mu, a, expected, 100.0f * (a - expected) / expected);
+    QVERIFY2(std::abs(a - expected) < relativeTolerance * expected,
+             qPrintable(QString("a = %1 m/s^2, expected %2").arg(a).arg(expected)));
+    // It slides along the slope, not off it: the velocity stays parallel to the face.
+    QVERIFY(std::abs(glm::dot(world.linearVelocity(incline.body), incline.normal)) < 0.05f);
+    QCOMPARE(world.effectUsage().ran(Effect::Friction), mu > 0.0f);
+}
+
+// -------------------------------------------------------------------------------------------------
+// 2. Rolling: a solid sphere (I = 2/5 m r^2) rolls without slipping when mu >= 2/7 tan(theta) = 0.165.
+
+void TestContacts::sphereRollsWithoutSlipping() {
+    World world(awakeSettings());
+    const float r = 0.25f;
+    const Incline incline(world, Shape::sphere(r), r, 1.0f);
+    const float expected = 5.0f / 7.0f * kG * std::sin(kTheta);  // 3.504 m/s^2
+    const float a = measureSlopeAcceleration(world, incline);
+    qInfo("rolling: a = %.4f m/s^2, expected %.4f (%+.2f %%)", a, expected, 100.0f * (a - expected) / expected);
+    // 5 %: a one-point contact, friction solved once per substep (the sliding box above has the
+    // same budget). Sliding instead of rolling would give 4.9 m/s^2 (+40 %).
+    QVERIFY2(std::abs(a - expected) < 0.05f * expected,
+             qPrintable(QString("a = %1 m/s^2, expected %2").arg(a).arg(expected)));
+
+    // Rolling: contact point at rest, so |w| = v / r (w along normal x downSlope).
+    const float v = incline.slopeSpeed(world);
+    const float w = glm::dot(world.angularVelocity(incline.body), glm::cross(incline.normal, incline.downSlope));
+    qInfo("rolling: w = %.4f rad/s, v / r = %.4f", w, v / r);
+    QVERIFY2(std::abs(w - v / r) < 0.05f * v / r, qPrintable(QString("w = %1 rad/s, v / r = %2").arg(w).arg(v / r)));
+}
+
+// -------------------------------------------------------------------------------------------------
+// 3. Elastic head-on impacts (restitution 1, no gravity, no friction).
+
+void TestContacts::elasticSpheresHeadOn_data() {
+    QTest::addColumn<float>("m1");
+    QTest::addColumn<float>("m2");
+    QTest::addColumn<float>("u1");
+    QTest::addColumn<float>("u2");
+    QTest::addColumn<float>("tolerance");  // relative to the approach speed
+    // Equal masses swap velocities. 2 %: the restitution pass restores e * (approach velocity
+    // measured when the step began); both spheres fly freely, so that is the impact velocity up to
+    // the soft contact's push, which the relax passes remove.
+    QTest::newRow("equal masses swap") << 1.0f << 1.0f << 3.0f << 0.0f << 0.02f;
+    QTest::newRow("equal masses, both moving") << 2.0f << 2.0f << 2.0f << -1.5f << 0.02f;
+    // 1 and 3 kg: v1' = ((m1 - m2) u1 + 2 m2 u2) / (m1 + m2) = -3, v2' = ((m2 - m1) u2 + 2 m1 u1) / (m1 + m2) = 1.
+    QTest::newRow("1 kg and 3 kg") << 1.0f << 3.0f << 3.0f << -1.0f << 0.03f;
+}
+
+void TestContacts::elasticSpheresHeadOn() {
+    QFETCH(float, m1);
+    QFETCH(float, m2);
+    QFETCH(float, u1);
+    QFETCH(float, u2);
+    QFETCH(float, tolerance);
+
+    WorldSettings settings = awakeSettings();
+    settings.gravity = Vec3(0.0f);
+    World world(settings);
+    auto sphere = [&](float x, float mass, float u) {
+        BodyCreationSettings b;
+        b.name = "sphere";
+        b.shape = Shape::sphere(0.5f);
+        b.position = Vec3(x, 0.0f, 0.0f);
+        b.mass = mass;
+        b.linearVelocity = Vec3(u, 0.0f, 0.0f);
+        b.friction = 0.0f;
+        b.restitution = 1.0f;
+        return world.createBody(b);
+    };
+    const BodyId a = sphere(-2.0f, m1, u1);
+    const BodyId b = sphere(2.0f, m2, u2);
+    const Vec3 p0 = world.linearMomentum();
+    const double e0 = world.kineticEnergy();
+
+    run(world, 3.0f);  // they meet within 1 s and are apart for good after
+
+    const float approach = u1 - u2;
+    const float v1 = ((m1 - m2) * u1 + 2.0f * m2 * u2) / (m1 + m2);
+    const float v2 = ((m2 - m1) * u2 + 2.0f * m1 * u1) / (m1 + m2);
+    const Vec3 w1 = world.linearVelocity(a), w2 = world.linearVelocity(b);
+    qInfo("v1 = %.4f (expected %.4f), v2 = %.4f (expected %.4f), kinetic energy %.4f -> %.4f J", w1.x, v1, w2.x, v2,
+          e0, world.kineticEnergy());
+    QVERIFY2(std::abs(w1.x - v1) < tolerance * approach && std::abs(w2.x - v2) < tolerance * approach,
+             qPrintable(QString("v1 = %1 (expected %2), v2 = %3 (expected %4)").arg(w1.x).arg(v1).arg(w2.x).arg(v2)));
+    // Head-on through the centres: nothing off the line of impact, no spin.
+    QVERIFY(glm::length(Vec3(0.0f, w1.y, w1.z)) < 1e-4f && glm::length(Vec3(0.0f, w2.y, w2.z)) < 1e-4f);
+    // Momentum: impulses are equal and opposite by construction; only float rounding remains.
+    const Vec3 p = world.linearMomentum();
+    QVERIFY2(glm::length(p - p0) < 1e-4f * std::max(glm::length(p0), m1 * std::abs(u1)),
+             qPrintable(QString("momentum %1 -> %2").arg(vecString(p0), vecString(p))));
+    // Energy: 2 % (from the same sources as the velocity bound; a 1 % velocity error is 2 % energy).
+    const double e = world.kineticEnergy();
+    QVERIFY2(std::abs(e - e0) < 0.02 * e0, qPrintable(QString("kinetic energy %1 -> %2 J").arg(e0).arg(e)));
+    QVERIFY(world.effectUsage().ran(Effect::Restitution));
+}
+
+// -------------------------------------------------------------------------------------------------
+// 4. Inelastic impacts.
+
+void TestContacts::boxWithoutRestitutionDoesNotBounce() {
+    World world(awakeSettings());
+    addGround(world);
+    const BodyId box = world.createBody(cube(Vec3(0.0f, 1.5f, 0.0f)));  // bottom 1 m up: hits at 4.4 m/s
+
+    float highestAfterImpact = -1.0f;
+    bool hit = false;
+    for (int i = 0, n = stepsFor(world, 3.0f); i < n; ++i) {
+        world.step();
+        const float y = world.position(box).y;
+        if (!hit && y < 0.5f + 0.02f) hit = true;  // within the speculative margin of the ground
+        if (hit) highestAfterImpact = std::max(highestAfterImpact, y);
+    }
+    QVERIFY(hit);
+    qInfo("box rose to %.4f m after impact, rests at %.4f m", highestAfterImpact, world.position(box).y);
+    // Restitution 0: the centre never rises more than 1 cm above its resting height (0.5 m).
+    QVERIFY2(highestAfterImpact < 0.5f + 0.01f, qPrintable(QString("rose to %1 m").arg(highestAfterImpact)));
+    // At rest on its face: speed below the sleep threshold, height 0.5 m to within the soft
+    // contact's resting overlap (a few millimetres at most).
+    QVERIFY2(glm::length(world.linearVelocity(box)) < 0.01f, qPrintable(vecString(world.linearVelocity(box))));
+    QVERIFY2(std::abs(world.position(box).y - 0.5f) < 0.005f, qPrintable(QString("y = %1").arg(world.position(box).y)));
+    QVERIFY(!world.effectUsage().ran(Effect::Restitution));
+}
+
+void TestContacts::ballReboundsToQuarterHeight() {
+    World world(awakeSettings());
+    addGround(world, 0.6f, 0.0f);  // restitution combines by max: the ball's 0.5 counts
+    BodyCreationSettings ball;
+    ball.name = "ball";
+    ball.shape = Shape::sphere(0.5f);
+    ball.position = Vec3(0.0f, 1.5f, 0.0f);  // lowest point 1 m above the ground
+    ball.mass = 1.0f;
+    ball.restitution = 0.5f;
+    const BodyId id = world.createBody(ball);
+
+    // Impact at sqrt(2 g h) = 4.43 m/s, rebound at 2.21 m/s, apex e^2 h = 0.25 m above contact.
+    bool bounced = false;
+    float apex = 0.0f;
+    for (int i = 0, n = stepsFor(world, 1.2f); i < n; ++i) {
+        world.step();
+        const float vy = world.linearVelocity(id).y;
+        if (vy > 0.0f) bounced = true;
+        if (bounced) apex = std::max(apex, world.position(id).y - 0.5f);
+    }
+    QVERIFY(bounced);
+    qInfo("ball apex %.4f m above rest (expected 0.25 m)", apex);
+    // 15 %: the restitution pass uses the approach speed at the start of the impact step, which is
+    // up to g dt = 0.16 m/s (3.7 %, so 7.4 % in height) below the true impact speed; the soft
+    // contact's push-out and the step's sampling of the apex (1/2 g dt^2 = 1.4 mm) add a little.
+    // A missing threshold or a bounce of e = 1 would give 1 m, e^2 vs e confusion 0.5 m.
+    QVERIFY2(std::abs(apex - 0.25f) < 0.15f * 0.25f, qPrintable(QString("apex %1 m, expected 0.25 m").arg(apex)));
+    QVERIFY(world.effectUsage().ran(Effect::Restitution));
+}
+
+// -------------------------------------------------------------------------------------------------
+// 5. The benchmark stacks stand.
+
+void TestContacts::benchStacksStand_data() {
+    QTest::addColumn<QString>("file");
+    QTest::addColumn<float>("maxPenetrationBound");
+    // Resting overlap of the soft contact under the load of the whole stack: the spring (60 Hz,
+    // capped at a quarter of 240 Hz, damping ratio 10) with the tower's 20 kg on the lowest face
+    // settles a few millimetres deep. 1 cm is twice the speculative margin and a fifth of the
+    // 5 cm drift allowed: a cube sinking that far is a failing contact, not a soft one.
+    QTest::newRow("tower20") << "scenes/bench/tower20.json" << 0.01f;
+    QTest::newRow("pyramid10") << "scenes/bench/pyramid10.json" << 0.01f;
+}
+
+void TestContacts::benchStacksStand() {
+    QFETCH(QString, file);
+    QFETCH(float, maxPenetrationBound);
+
+    const SceneLoadResult loaded = loadSceneFile(std::string(INTERPLAY_SOURCE_DIR) + "/" + file.toStdString());
+    QVERIFY(loaded.ok());
+    BuiltWorld built = buildWorld(*loaded.scene);
+    World& world = built.world;
+    std::vector<Vec3> start;
+    for (const BodyId id : built.bodyIds) start.push_back(world.position(id));
+
+    // Standing means at every instant, not just at the end: the worst drift over the whole run.
+    float worstPenetration = 0.0f;
+    float worstDrift = 0.0f;
+    float worstDriftTime = 0.0f;
+    QString worstBody;
+    for (int i = 0, n = stepsFor(world, 10.0f); i < n; ++i) {
+        world.step();
+        worstPenetration = std::max(worstPenetration, world.lastStepProfile().maxPenetration);
+        for (std::size_t k = 0; k < built.bodyIds.size(); ++k) {
+            const float drift = glm::length(world.position(built.bodyIds[k]) - start[k]);
+            if (drift > worstDrift) {
+                worstDrift = drift;
+                worstDriftTime = static_cast<float>(world.simulatedTime());
+                worstBody = QString::fromStdString(world.name(built.bodyIds[k]));
+            }
+        }
+    }
+    qInfo("%s: worst drift %.4f m (%s at t = %.2f s), max penetration %.4f m", qPrintable(file), worstDrift,
+          qPrintable(worstBody), worstDriftTime, worstPenetration);
+    QVERIFY(!world.findNonFiniteBody());
+    QVERIFY2(worstPenetration < maxPenetrationBound,
+             qPrintable(QString("max penetration %1 m").arg(worstPenetration)));
+    QVERIFY2(worstDrift < 0.05f, qPrintable(QString("%1 moved %2 m").arg(worstBody).arg(worstDrift)));
+}
+
+// -------------------------------------------------------------------------------------------------
+// 6. A 100 kg cube on a 1 kg cube.
+
+void TestContacts::heavyOnLightHolds() {
+    World world(awakeSettings());
+    addGround(world);
+    const BodyId light = world.createBody(cube(Vec3(0.0f, 0.5f, 0.0f), 1.0f));
+    const BodyId heavy = world.createBody(cube(Vec3(0.0f, 1.5f, 0.0f), 100.0f));
+    const Vec3 heavyStart = world.position(heavy);
+
+    float lowestLight = 1.0f;
+    float drift = 0.0f;  // worst over the run: holding means at every instant
+    float deepest = 0.0f;
+    for (int i = 0, n = stepsFor(world, 5.0f); i < n; ++i) {
+        world.step();
+        lowestLight = std::min(lowestLight, world.position(light).y);
+        drift = std::max(drift, glm::length(world.position(heavy) - heavyStart));
+        deepest = std::max(deepest, world.lastStepProfile().maxPenetration);
+    }
+    qInfo("heavy on light: heavy drift %.4f m, light centre down to %.4f m, max penetration %.4f m", drift,
+          lowestLight, deepest);
+    // 2 cm: both soft contacts carry 100 kg; at 100:1 the sequential solver converges slowly and
+    // the light cube is squeezed a few millimetres, never centimetres, unless the stack fails.
+    QVERIFY2(drift < 0.02f, qPrintable(QString("heavy cube moved %1 m").arg(drift)));
+    // No tunnelling: the light cube's centre (0.5 m at rest) stays above 0.4 m.
+    QVERIFY2(lowestLight > 0.4f, qPrintable(QString("light cube's centre went down to %1 m").arg(lowestLight)));
+    QVERIFY(world.position(heavy).y > world.position(light).y + 0.9f);
+}
+
+// -------------------------------------------------------------------------------------------------
+// 7. Sleeping and waking.
+
+void TestContacts::pileSleepsAndWakesWhenHit() {
+    World world;  // sleep enabled by default
+    QVERIFY(world.settings().sleep.enabled);
+    addGround(world);
+    // 30 cubes in a loose grid: 3 layers of 5 x 2, 0.2 m gaps, each layer dropped from 0.1 m above
+    // where it comes to rest.
+    std::vector<BodyId> pile;
+    for (int layer = 0; layer < 3; ++layer)
+        for (int i = 0; i < 5; ++i)
+            for (int k = 0; k < 2; ++k)
+                pile.push_back(world.createBody(
+                    cube(Vec3(-2.4f + 1.2f * i, 0.6f + 1.1f * layer, -0.6f + 1.2f * k))));
+    // A lone cube resting far away: its own island.
+    const BodyId far = world.createBody(cube(Vec3(30.0f, 0.5f, 0.0f)));
+
+    int stepsToSleep = -1;
+    for (int i = 0, n = stepsFor(world, 5.0f); i < n; ++i) {
+        world.step();
+        if (world.lastStepProfile().counters.awakeBodies == 0) {
+            stepsToSleep = i + 1;
+            break;
+        }
+    }
+    QVERIFY2(stepsToSleep > 0, qPrintable(QString("%1 bodies still awake after 5 s")
+                                              .arg(world.lastStepProfile().counters.awakeBodies)));
+    qInfo("pile of 30 asleep after %.2f s", stepsToSleep * world.settings().timeStep);
+
+    // Throw a ball into the first column of the pile.
+    BodyCreationSettings ball;
+    ball.name = "ball";
+    ball.shape = Shape::sphere(0.3f);
+    ball.position = Vec3(-5.0f, 0.5f, -0.6f);
+    ball.linearVelocity = Vec3(8.0f, 0.0f, 0.0f);
+    ball.mass = 2.0f;
+    const BodyId thrown = world.createBody(ball);
+
+    int awakePileBodies = 0;
+    for (int i = 0; i < 60 && awakePileBodies == 0; ++i) {
+        world.step();
+        awakePileBodies = static_cast<int>(
+            std::count_if(pile.begin(), pile.end(), [&](BodyId id) { return world.isAwake(id); }));
+        QVERIFY2(!world.isAwake(far), "the far cube woke up");
+    }
+    QVERIFY2(awakePileBodies > 0, "the ball hit the pile without waking it");
+    QVERIFY(world.position(thrown).x < -2.4f);  // it hit and did not pass through
+    for (int i = 0; i < 60; ++i) {
+        world.step();
+        QVERIFY2(!world.isAwake(far), "the far cube woke up");
+    }
+}
+
+// -------------------------------------------------------------------------------------------------
+// 8. Effect switches.
+
+void TestContacts::effectSwitches() {
+    const float freeSlide = kG * std::sin(kTheta);
+    {
+        // Friction off: the mu 0.8 box that would stick slides as if frictionless (3 %, as above).
+        WorldSettings settings = awakeSettings();
+        settings.effects[Effect::Friction] = false;
+        World world(settings);
+        const Incline incline(world, Shape::box(Vec3(0.25f)), 0.25f, 0.8f);
+        const float a = measureSlopeAcceleration(world, incline);
+        QVERIFY2(std::abs(a - freeSlide) < 0.03f * freeSlide, qPrintable(QString("a = %1").arg(a)));
+        QVERIFY(!world.effectUsage().ran(Effect::Friction));
+        QVERIFY(world.effectUsage().ran(Effect::Contacts));
+    }
+    {
+        // Friction on but one side frictionless: sqrt(0.8 * 0) = 0, no friction rows at all.
+        WorldSettings settings = awakeSettings();
+        World world(settings);
+        Incline incline(world, Shape::box(Vec3(0.25f)), 0.25f, 0.0f);
+        const float a = measureSlopeAcceleration(world, incline);
+        QVERIFY2(std::abs(a - freeSlide) < 0.03f * freeSlide, qPrintable(QString("a = %1").arg(a)));
+        QVERIFY(!world.effectUsage().ran(Effect::Friction));
+    }
+    {
+        // The combining rule itself: any frictionless side makes the pair frictionless.
+        QCOMPARE(combineFriction(0.8f, 0.0f), 0.0f);
+        QVERIFY(std::abs(combineFriction(0.8f, 0.2f) - 0.4f) < 1e-6f);
+        QCOMPARE(combineRestitution(0.0f, 0.5f), 0.5f);
+    }
+    {
+        // Contacts off: a box resting on the ground falls through it freely (1/2 g t^2 = 4.9 m in 1 s).
+        WorldSettings settings = awakeSettings();
+        settings.effects[Effect::Contacts] = false;
+        World world(settings);
+        addGround(world);
+        const BodyId box = world.createBody(cube(Vec3(0.0f, 0.5f, 0.0f)));
+        run(world, 1.0f);
+        QVERIFY2(world.position(box).y < 0.5f - 4.5f, qPrintable(QString("y = %1").arg(world.position(box).y)));
+        QVERIFY(!world.effectUsage().ran(Effect::Contacts));
+        QVERIFY(!world.effectUsage().ran(Effect::Friction));
+        QVERIFY(world.effectUsage().ran(Effect::Gravity));
+    }
+}
+
+void TestContacts::restitutionRunsOnlyWhenSomePairBounces() {
+    struct Case {
+        const char* name;
+        float restitution;
+        bool effectEnabled;
+        bool expectRan;
+    };
+    const Case cases[] = {
+        {"restitution 0", 0.0f, true, false},
+        {"restitution 0.5", 0.5f, true, true},
+        {"restitution 0.5, effect off", 0.5f, false, false},
+    };
+    for (const Case& c : cases) {
+        WorldSettings settings = awakeSettings();
+        settings.effects[Effect::Restitution] = c.effectEnabled;
+        World world(settings);
+        addGround(world);
+        BodyCreationSettings ball;
+        ball.shape = Shape::sphere(0.5f);
+        ball.position = Vec3(0.0f, 1.5f, 0.0f);
+        ball.mass = 1.0f;
+        ball.restitution = c.restitution;
+        const BodyId id = world.createBody(ball);
+        float maxUpward = 0.0f;
+        for (int i = 0, n = stepsFor(world, 1.0f); i < n; ++i) {
+            world.step();
+            maxUpward = std::max(maxUpward, world.linearVelocity(id).y);
+        }
+        QVERIFY2(world.effectUsage().ran(Effect::Restitution) == c.expectRan, c.name);
+        // Without restitution the ball does not leave the ground (upward speed from the soft
+        // push-out only, centimetres per second); with it, it rebounds at about 2.2 m/s.
+        QVERIFY2((maxUpward > 1.5f) == c.expectRan, qPrintable(QString("%1: upward %2 m/s").arg(c.name).arg(maxUpward)));
+    }
+}
+
+// -------------------------------------------------------------------------------------------------
+// 9. No heap allocation per step once the contact set is steady.
+
+void TestContacts::steadyStateStepDoesNotAllocate() {
+    World world(awakeSettings());  // sleep off: every body keeps being stepped
+    addGround(world);
+    for (int layer = 0; layer < 4; ++layer)
+        for (int i = 0; i < 5; ++i)
+            for (int k = 0; k < 5; ++k)
+                world.createBody(cube(Vec3(-2.4f + 1.2f * i, 0.6f + 1.2f * layer, -2.4f + 1.2f * k)));
+    QCOMPARE(world.bodyCount(), std::size_t(101));
+    for (int i = 0; i < 120; ++i) world.step();
+
+    test_support::startCountingAllocations();
+    for (int i = 0; i < 60; ++i) world.step();
+    const std::size_t allocations = test_support::stopCountingAllocations();
+    QCOMPARE(world.lastStepProfile().counters.awakeBodies, 100u);
+    QVERIFY(world.lastStepProfile().counters.contactPoints > 0);
+    QCOMPARE(allocations, std::size_t{0});
+}
+
+// -------------------------------------------------------------------------------------------------
+// 10. A long mixed run.
+
+void TestContacts::longMixedRunStaysFiniteAndDoesNotGainEnergy() {
+    World world(awakeSettings());
+    addGround(world, 0.6f, 0.0f, 20.0f);
+    // Walls keep rolling bodies on the ground (the arena is 30 m across, the walls 4 m high).
+    for (int side = 0; side < 4; ++side) {
+        BodyCreationSettings wall;
+        wall.name = "wall";
+        wall.motion = MotionType::Static;
+        const bool alongX = side < 2;
+        const float sign = side % 2 == 0 ? 1.0f : -1.0f;
+        wall.shape = Shape::box(alongX ? Vec3(0.5f, 2.0f, 16.0f) : Vec3(16.0f, 2.0f, 0.5f));
+        wall.position = alongX ? Vec3(sign * 15.5f, 2.0f, 0.0f) : Vec3(0.0f, 2.0f, sign * 15.5f);
+        world.createBody(wall);
+    }
+
+    std::mt19937 rng(20240611u);
+    auto uniform = [&rng](float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(rng); };
+    // 200 bodies on a 6 x 6 grid of 2 m cells, 6 layers from 1 m up: every shape fits in a 1 m
+    // cube (half sizes 0.05-0.5 m, a 0.87 m circumradius at most), so nothing starts overlapping.
+    int created = 0;
+    for (int layer = 0; layer < 6 && created < 200; ++layer) {
+        for (int i = 0; i < 6 && created < 200; ++i) {
+            for (int k = 0; k < 6 && created < 200; ++k, ++created) {
+                BodyCreationSettings b;
+                b.name = "body " + std::to_string(created);
+                switch (created % 5) {
+                    case 0: b.shape = Shape::box(Vec3(uniform(0.05f, 0.5f), uniform(0.05f, 0.5f), uniform(0.05f, 0.5f))); break;
+                    case 1: b.shape = Shape::sphere(uniform(0.05f, 0.5f)); break;
+                    case 2: {
+                        const float radius = uniform(0.05f, 0.25f);
+                        b.shape = Shape::capsule(radius, uniform(0.05f, 0.5f - radius));
+                        break;
+                    }
+                    case 3: b.shape = Shape::cylinder(uniform(0.05f, 0.35f), uniform(0.05f, 0.35f)); break;
+                    case 4: {
+                        const Vec3 size(uniform(0.05f, 0.5f), uniform(0.05f, 0.5f), uniform(0.05f, 0.5f));
+                        std::vector<Vec3> points;
+                        for (int p = 0; p < 12; ++p)
+                            points.push_back(size * Vec3(uniform(-1.0f, 1.0f), uniform(-1.0f, 1.0f), uniform(-1.0f, 1.0f)));
+                        ConvexHull::BuildResult hull = ConvexHull::build(points);
+                        QVERIFY2(hull.hull, hull.error.c_str());
+                        b.shape = Shape::convexHull(hull.hull);
+                        break;
+                    }
+                }
+                b.position = Vec3(-5.0f + 2.0f * i, 1.0f + 2.0f * layer, -5.0f + 2.0f * k);
+                b.orientation = glm::normalize(Quat(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)));
+                b.linearVelocity = Vec3(uniform(-4, 4), uniform(-4, 4), uniform(-4, 4));
+                b.angularVelocity = Vec3(uniform(-5, 5), uniform(-5, 5), uniform(-5, 5));
+                b.density = uniform(200.0f, 2000.0f);
+                b.friction = uniform(0.0f, 1.0f);
+                b.restitution = uniform(0.0f, 0.5f);
+                world.createBody(b);
+            }
+        }
+    }
+
+    const double e0 = totalEnergy(world);
+    QVERIFY(e0 > 0.0);
+    double worstEnergy = e0;
+    int worstEnergyStep = 0;
+    float lowest = 0.0f;
+    std::string lowestName;
+    for (int step = 1; step <= 2000; ++step) {
+        world.step();
+        if (const auto bad = world.findNonFiniteBody())
+            QFAIL(qPrintable(QString("step %1: %2 has a non-finite %3")
+                                 .arg(step).arg(bad->name.c_str(), bad->quantity.c_str())));
+        const double e = totalEnergy(world);
+        if (e > worstEnergy) {
+            worstEnergy = e;
+            worstEnergyStep = step;
+        }
+        const BodyStorage& bodies = world.bodies();
+        for (std::size_t i = 0; i < bodies.size(); ++i) {
+            if (bodies.motion[i] == MotionType::Dynamic && bodies.centerOfMass[i].y < lowest) {
+                lowest = bodies.centerOfMass[i].y;
+                lowestName = bodies.name[i];
+            }
+        }
+    }
+    qInfo("mixed run: energy %.1f J -> %.1f J, peak %.1f J at step %d, lowest centre %.3f m (%s)", e0,
+          totalEnergy(world), worstEnergy, worstEnergyStep, lowest, lowestName.c_str());
+    // Nothing tunnels through the 1 m thick ground at these speeds (at most ~15 m/s, 25 cm a step).
+    QVERIFY2(lowest > -0.5f, qPrintable(QString("a centre of mass reached y = %1 m").arg(lowest)));
+    // Contacts, friction and restitution <= 1 only take energy out, semi-implicit Euler loses
+    // 1/2 m g^2 h t in free flight; 1 % covers the soft contact's push-out of transient overlap.
+    QVERIFY2(worstEnergy <= 1.01 * e0,
+             qPrintable(QString("energy rose from %1 J to %2 J at step %3").arg(e0).arg(worstEnergy).arg(worstEnergyStep)));
+}
+
+QTEST_APPLESS_MAIN(TestContacts)
+#include "test_contacts.moc"
