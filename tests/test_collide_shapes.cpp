@@ -9,6 +9,7 @@
 // and B swapped: same points, same separations, flipped normal.
 
 #include "support/allocation_counter.h"
+#include "support/geometry.h"
 #include "simcore/collision/collide_shapes.h"
 #include "simcore/shapes/convex_hull.h"
 #include "simcore/shapes/shape.h"
@@ -27,37 +28,12 @@
 #include <vector>
 
 using namespace simcore;
+using namespace test_support;
 
 namespace {
 
 constexpr float kSeparationTolerance = 1e-4f;  // m
 constexpr float kPointTolerance = 1e-4f;       // m
-
-Quat rotation(float degrees, const Vec3& axis) { return glm::angleAxis(glm::radians(degrees), glm::normalize(axis)); }
-
-// Rotation taking direction `from` onto direction `to` (not opposite).
-Quat rotationBetween(const Vec3& from, const Vec3& to) {
-    const Vec3 f = glm::normalize(from);
-    const Vec3 t = glm::normalize(to);
-    return glm::angleAxis(std::acos(std::clamp(glm::dot(f, t), -1.0f, 1.0f)), glm::normalize(glm::cross(f, t)));
-}
-
-Transform place(const Vec3& position, const Quat& orientation = Quat(1.0f, 0.0f, 0.0f, 0.0f)) {
-    Transform t;
-    t.position = position;
-    t.rotation = orientation;
-    return t;
-}
-
-std::shared_ptr<const ConvexHull> boxHull(const Vec3& h) {
-    std::vector<Vec3> corners;
-    for (int i = 0; i < 8; ++i) {
-        corners.emplace_back((i & 1) ? h.x : -h.x, (i & 2) ? h.y : -h.y, (i & 4) ? h.z : -h.z);
-    }
-    auto result = ConvexHull::build(corners);
-    if (!result.hull) qFatal("hull build failed: %s", result.error.c_str());
-    return result.hull;
-}
 
 // Signed distance to the surface, positive outside (exact for the faces of boxes and hulls).
 float outsideBy(const Shape& shape, const Transform& t, const Vec3& world) {
@@ -125,8 +101,8 @@ std::vector<Case> makeCases() {
     const Shape ground = Shape::box(Vec3(2.0f, 0.5f, 2.0f));
     const Shape smallGround = Shape::box(Vec3(1.0f, 0.5f, 1.0f));
     const Shape unitBox = Shape::box(Vec3(0.5f));
-    const Shape unitHull = Shape::convexHull(boxHull(Vec3(0.5f)));
-    const Shape groundHull = Shape::convexHull(boxHull(Vec3(2.0f, 0.5f, 2.0f)));
+    const Shape unitHull = boxHull(Vec3(0.5f));
+    const Shape groundHull = boxHull(Vec3(2.0f, 0.5f, 2.0f));
     const Shape ball = Shape::sphere(0.5f);
         const Shape lyingCapsule = Shape::capsule(0.25f, 0.5f);
     const Shape longCapsule = Shape::capsule(0.2f, 1.0f);

@@ -13,6 +13,7 @@
 // Plus: warm-start cache, the boolean query, and no heap allocation in the queries.
 
 #include "support/allocation_counter.h"
+#include "support/geometry.h"
 #include "simcore/collision/epa.h"
 #include "simcore/collision/gjk.h"
 #include "simcore/shapes/convex_hull.h"
@@ -29,36 +30,11 @@
 #include <vector>
 
 using namespace simcore;
+using namespace test_support;
 
 namespace {
 
 // ---- Helpers -------------------------------------------------------------------------------------
-
-Quat rotation(float degrees, const Vec3& axis) { return glm::angleAxis(glm::radians(degrees), glm::normalize(axis)); }
-
-// Rotation taking unit vector `from` onto unit vector `to` (not opposite).
-Quat rotationBetween(const Vec3& from, const Vec3& to) {
-    const Vec3 f = glm::normalize(from);
-    const Vec3 t = glm::normalize(to);
-    return glm::angleAxis(std::acos(std::clamp(glm::dot(f, t), -1.0f, 1.0f)), glm::normalize(glm::cross(f, t)));
-}
-
-Transform place(const Vec3& position, const Quat& orientation = Quat(1.0f, 0.0f, 0.0f, 0.0f)) {
-    Transform t;
-    t.position = position;
-    t.rotation = orientation;
-    return t;
-}
-
-// Applies `outer` after `inner`.
-Transform compose(const Transform& outer, const Transform& inner) {
-    return place(outer.apply(inner.position), glm::normalize(outer.rotation * inner.rotation));
-}
-
-// Farthest extent of the placed shape along a world direction.
-float extentAlong(const Shape& shape, const Transform& t, const Vec3& direction) {
-    return glm::dot(direction, t.apply(support(shape, t.rotateInverse(direction))));
-}
 
 // Overlap of A and B along n: how far B must move along n to separate.
 float overlapAlong(const Shape& a, const Transform& ta, const Shape& b, const Transform& tb, const Vec3& n) {
@@ -88,21 +64,6 @@ float outsideBy(const Shape& shape, const Transform& t, const Vec3& world) {
         }
     }
     return 0.0f;
-}
-
-float sizeOf(const Shape& shape) {
-    const Aabb bounds = localBounds(shape);
-    return glm::length(bounds.max - bounds.min);
-}
-
-std::shared_ptr<const ConvexHull> buildHull(const std::vector<Vec3>& points) {
-    auto result = ConvexHull::build(points);
-    if (!result.hull) qFatal("hull build failed: %s", result.error.c_str());
-    return result.hull;
-}
-
-Shape octahedron(float r) {
-    return Shape::convexHull(buildHull({{r, 0, 0}, {-r, 0, 0}, {0, r, 0}, {0, -r, 0}, {0, 0, r}, {0, 0, -r}}));
 }
 
 Shape scaled(const Shape& s, float k) {

@@ -11,6 +11,7 @@
 // Plus: origins inside or on the surface, degenerate input, and no heap allocation.
 
 #include "support/allocation_counter.h"
+#include "support/geometry.h"
 #include "simcore/collision/ray_cast.h"
 #include "simcore/shapes/convex_hull.h"
 #include "simcore/shapes/shape.h"
@@ -26,6 +27,7 @@
 #include <vector>
 
 using namespace simcore;
+using namespace test_support;
 
 namespace {
 
@@ -34,47 +36,12 @@ namespace {
 const Vec3 kX(1, 0, 0), kY(0, 1, 0), kZ(0, 0, 1);
 constexpr float kSqrtHalf = 0.70710678f;
 
-Quat rotation(float degrees, const Vec3& axis) { return glm::angleAxis(glm::radians(degrees), glm::normalize(axis)); }
-
-Transform place(const Vec3& position, const Quat& orientation = Quat(1.0f, 0.0f, 0.0f, 0.0f)) {
-    Transform t;
-    t.position = position;
-    t.rotation = orientation;
-    return t;
-}
-
-// Applies `outer` after `inner`.
-Transform compose(const Transform& outer, const Transform& inner) {
-    return place(outer.apply(inner.position), glm::normalize(outer.rotation * inner.rotation));
-}
-
 RayCastInput ray(const Vec3& origin, const Vec3& direction, float maxFraction = 1.0f) {
     return {origin, direction, maxFraction};
 }
 
-std::shared_ptr<const ConvexHull> buildHull(const std::vector<Vec3>& points) {
-    auto result = ConvexHull::build(points);
-    if (!result.hull) qFatal("hull build failed: %s", result.error.c_str());
-    return result.hull;
-}
-
-Shape octahedron(float r) {
-    return Shape::convexHull(buildHull({{r, 0, 0}, {-r, 0, 0}, {0, r, 0}, {0, -r, 0}, {0, 0, r}, {0, 0, -r}}));
-}
-
 // Square base [-1, 1]^2 at y = 0, apex at (0, 2, 0).
 Shape pyramid() { return Shape::convexHull(buildHull({{-1, 0, -1}, {1, 0, -1}, {1, 0, 1}, {-1, 0, 1}, {0, 2, 0}})); }
-
-Shape boxHull(const Vec3& h) {
-    std::vector<Vec3> corners;
-    for (int i = 0; i < 8; ++i) corners.push_back({(i & 1) ? h.x : -h.x, (i & 2) ? h.y : -h.y, (i & 4) ? h.z : -h.z});
-    return Shape::convexHull(buildHull(corners));
-}
-
-// Farthest extent of the placed shape along a world direction.
-float extentAlong(const Shape& shape, const Transform& t, const Vec3& direction) {
-    return glm::dot(direction, t.apply(support(shape, t.rotateInverse(direction))));
-}
 
 // Containment, written independently of the ray code: the reference the march relies on.
 bool contains(const Shape& shape, const Transform& t, const Vec3& world) {
@@ -128,11 +95,6 @@ float outsideBy(const Shape& shape, const Transform& t, const Vec3& world) {
         }
     }
     return 0.0f;
-}
-
-float sizeOf(const Shape& shape) {
-    const Aabb bounds = localBounds(shape);
-    return glm::length(bounds.max - bounds.min);
 }
 
 bool isFiniteHit(const RayCastHit& hit) { return isFinite(hit.fraction) && isFinite(hit.point) && isFinite(hit.normal); }
