@@ -90,6 +90,18 @@ void ContactManager::updateManifolds(const BodyStorage& bodies, const BroadPhase
             continue;
         }
 
+        // Fat boxes overlap long before shapes touch: when even the tight boxes, grown by the
+        // speculative distance, are apart, the pair has no points and the shape test is skipped.
+        Aabb reach = bodies.bounds[a];
+        reach.min -= Vec3(speculativeDistance);
+        reach.max += Vec3(speculativeDistance);
+        if (!reach.overlaps(bodies.bounds[b])) {
+            contact.manifold.pointCount = 0;
+            contact.impulses = {};
+            ++c;
+            continue;
+        }
+
         ContactManifold manifold;
         collideShapes(bodies.shape[a], bodies.transform(a), bodies.shape[b], bodies.transform(b),
                       speculativeDistance, manifold);

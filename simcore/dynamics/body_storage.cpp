@@ -45,6 +45,7 @@ BodyId BodyStorage::add(const BodyCreationSettings& settings, const MassProperti
     sleepTime.push_back(0.0f);
     name.push_back(settings.name);
     proxy.push_back(0);
+    bounds.push_back(worldBounds(settings.shape, Transform{settings.position, q}));
     refreshInverseInertiaWorld(dense);
 
     std::uint32_t slot;
@@ -71,7 +72,7 @@ void BodyStorage::remove(BodyId id) {
     swapRemove(i, centerOfMass, orientation, linearVelocity, angularVelocity, force, torque, mass,
                inverseMass, inertiaLocal, inverseInertiaLocal, inverseInertiaWorld,
                localCenterOfMass, motion, shape, friction, restitution, ccd, awake, sleepTime,
-               name, proxy, denseToSlot_);
+               name, proxy, bounds, denseToSlot_);
     slotToDense_[movedSlot] = static_cast<std::uint32_t>(i);
 
     ++slotGeneration_[id.index];  // stale handles to this slot now fail denseIndex()

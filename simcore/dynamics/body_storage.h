@@ -34,6 +34,7 @@ public:
     std::vector<float> sleepTime;            // s the body has been below the sleep thresholds
     std::vector<std::string> name;
     std::vector<std::uint32_t> proxy;        // broad-phase proxy, set by the world
+    std::vector<Aabb> bounds;                // tight world bounds, refreshed by the world's broad phase
 
     std::size_t size() const { return centerOfMass.size(); }
 

@@ -95,8 +95,7 @@ BodyId World::createBody(const BodyCreationSettings& settings) {
     const BodyId id = bodies_.add(settings, massProperties);
     const std::size_t i = bodies_.size() - 1;
     // Static bodies never move, so their proxies are inactive: pairs need an active side.
-    bodies_.proxy[i] = broadPhase_.addProxy(worldBounds(settings.shape, bodies_.transform(i)), id.index,
-                                            settings.motion != MotionType::Static);
+    bodies_.proxy[i] = broadPhase_.addProxy(bodies_.bounds[i], id.index, settings.motion != MotionType::Static);
     return id;
 }
 
@@ -276,8 +275,8 @@ void World::step() {
 void World::updateBroadPhase(float dt) {
     for (std::size_t i = 0; i < bodies_.size(); ++i) {
         if (bodies_.motion[i] == MotionType::Static || !bodies_.awake[i]) continue;
-        broadPhase_.moveProxy(bodies_.proxy[i], worldBounds(bodies_.shape[i], bodies_.transform(i)),
-                              dt * bodies_.linearVelocity[i]);
+        bodies_.bounds[i] = worldBounds(bodies_.shape[i], bodies_.transform(i));
+        broadPhase_.moveProxy(bodies_.proxy[i], bodies_.bounds[i], dt * bodies_.linearVelocity[i]);
     }
     broadPhase_.updatePairs(newPairs_);
     contactManager_.addPairs(newPairs_, bodies_);
@@ -318,7 +317,8 @@ void World::setTransform(BodyId id, const Vec3& position, const Quat& orientatio
     bodies_.orientation[i] = glm::normalize(orientation);
     bodies_.centerOfMass[i] = position + bodies_.orientation[i] * bodies_.localCenterOfMass[i];
     bodies_.refreshInverseInertiaWorld(i);
-    broadPhase_.moveProxy(bodies_.proxy[i], worldBounds(bodies_.shape[i], bodies_.transform(i)), Vec3(0.0f));
+    bodies_.bounds[i] = worldBounds(bodies_.shape[i], bodies_.transform(i));
+    broadPhase_.moveProxy(bodies_.proxy[i], bodies_.bounds[i], Vec3(0.0f));
     wakeIndex(i);
 }
 
