@@ -17,8 +17,7 @@ namespace simcore {
 
 struct ContactImpulse {
     float normal = 0.0f;    // N s, >= 0
-    float tangent1 = 0.0f;  // N s, along ContactManifold's first tangent
-    float tangent2 = 0.0f;
+    Vec3 friction{0.0f};    // N s, world frame, in the contact plane (the solver's tangents change)
 };
 
 struct Contact {
