@@ -73,7 +73,7 @@ void ContactManager::addPairs(const std::vector<BodyPair>& pairs, const BodyStor
 }
 
 void ContactManager::updateManifolds(const BodyStorage& bodies, const BroadPhase& broadPhase,
-                                     float speculativeDistance) {
+                                     float speculativeDistance, float timeStep) {
     auto isAwakeDynamic = [&bodies](std::size_t i) {
         return bodies.motion[i] == MotionType::Dynamic && bodies.awake[i];
     };
@@ -90,11 +90,20 @@ void ContactManager::updateManifolds(const BodyStorage& bodies, const BroadPhase
             continue;
         }
 
+        // Speculative margin: how far the surfaces can approach within the step (relative linear
+        // speed plus each body's spin times its reach), so a fast impact is met at contact rather
+        // than discovered a step later deep inside, where pushing out adds energy.
+        const float approachSpeed =
+            glm::length(bodies.linearVelocity[b] - bodies.linearVelocity[a]) +
+            glm::length(bodies.angularVelocity[a]) * glm::length(bodies.bounds[a].halfExtents()) +
+            glm::length(bodies.angularVelocity[b]) * glm::length(bodies.bounds[b].halfExtents());
+        const float margin = speculativeDistance + timeStep * approachSpeed;
+
         // Fat boxes overlap long before shapes touch: when even the tight boxes, grown by the
-        // speculative distance, are apart, the pair has no points and the shape test is skipped.
+        // margin, are apart, the pair has no points and the shape test is skipped.
         Aabb reach = bodies.bounds[a];
-        reach.min -= Vec3(speculativeDistance);
-        reach.max += Vec3(speculativeDistance);
+        reach.min -= Vec3(margin);
+        reach.max += Vec3(margin);
         if (!reach.overlaps(bodies.bounds[b])) {
             contact.manifold.pointCount = 0;
             contact.impulses = {};
@@ -103,8 +112,7 @@ void ContactManager::updateManifolds(const BodyStorage& bodies, const BroadPhase
         }
 
         ContactManifold manifold;
-        collideShapes(bodies.shape[a], bodies.transform(a), bodies.shape[b], bodies.transform(b),
-                      speculativeDistance, manifold);
+        collideShapes(bodies.shape[a], bodies.transform(a), bodies.shape[b], bodies.transform(b), margin, manifold);
 
         contact.impulses = matchImpulses(contact.manifold, contact.impulses, manifold);
         contact.manifold = manifold;

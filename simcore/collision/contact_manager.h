@@ -39,8 +39,10 @@ public:
     void addPairs(const std::vector<BodyPair>& pairs, const BodyStorage& bodies);
 
     // Narrow phase: refreshes the manifold of every contact with an awake dynamic body, and
-    // destroys contacts whose bodies' fat bounds no longer overlap.
-    void updateManifolds(const BodyStorage& bodies, const BroadPhase& broadPhase, float speculativeDistance);
+    // destroys contacts whose bodies' fat bounds no longer overlap. Points are kept while their
+    // separation is within speculativeDistance plus how far the bodies can approach in timeStep.
+    void updateManifolds(const BodyStorage& bodies, const BroadPhase& broadPhase, float speculativeDistance,
+                         float timeStep);
 
     void removeContactsOf(std::uint32_t slot);
     void clear();

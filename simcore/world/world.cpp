@@ -283,7 +283,7 @@ void World::updateBroadPhase(float dt) {
 }
 
 void World::updateContacts() {
-    contactManager_.updateManifolds(bodies_, broadPhase_, settings_.contact.speculativeDistance);
+    contactManager_.updateManifolds(bodies_, broadPhase_, settings_.contact.speculativeDistance, settings_.timeStep);
 }
 
 void World::setAwake(std::size_t i, bool awake) {
