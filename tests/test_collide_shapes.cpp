@@ -35,31 +35,6 @@ namespace {
 constexpr float kSeparationTolerance = 1e-4f;  // m
 constexpr float kPointTolerance = 1e-4f;       // m
 
-// Signed distance to the surface, positive outside (exact for the faces of boxes and hulls).
-float outsideBy(const Shape& shape, const Transform& t, const Vec3& world) {
-    const Vec3 p = t.applyInverse(world);
-    switch (shape.type) {
-        case ShapeType::Sphere: return glm::length(p) - shape.radius;
-        case ShapeType::Box: {
-            const Vec3 q = glm::abs(p) - shape.halfExtents;
-            const float outside = glm::length(glm::max(q, Vec3(0.0f)));
-            return outside > 0.0f ? outside : std::max({q.x, q.y, q.z});
-        }
-        case ShapeType::Capsule: {
-            const Vec3 axisPoint(0.0f, std::clamp(p.y, -shape.halfHeight, shape.halfHeight), 0.0f);
-            return glm::length(p - axisPoint) - shape.radius;
-        }
-        case ShapeType::Cylinder:
-            return std::max(std::sqrt(p.x * p.x + p.z * p.z) - shape.radius, std::abs(p.y) - shape.halfHeight);
-        case ShapeType::ConvexHull: {
-            float worst = -std::numeric_limits<float>::infinity();
-            for (const HullFace& f : shape.hull->faces()) worst = std::max(worst, glm::dot(f.normal, p) - f.offset);
-            return worst;
-        }
-    }
-    return 0.0f;
-}
-
 // Area of the convex polygon through the points, in the plane perpendicular to `normal`.
 float spannedArea(const std::vector<Vec3>& points, const Vec3& normal) {
     if (points.size() < 3) return 0.0f;

@@ -41,31 +41,6 @@ float overlapAlong(const Shape& a, const Transform& ta, const Shape& b, const Tr
     return extentAlong(a, ta, n) + extentAlong(b, tb, -n);
 }
 
-// Positive outside the shape, <= 0 inside (exact for sphere, capsule and the box's faces; an
-// underestimate outside a box's edges, which only makes the check stricter).
-float outsideBy(const Shape& shape, const Transform& t, const Vec3& world) {
-    const Vec3 p = t.applyInverse(world);
-    switch (shape.type) {
-        case ShapeType::Sphere: return glm::length(p) - shape.radius;
-        case ShapeType::Box: {
-            const Vec3 q = glm::abs(p) - shape.halfExtents;
-            return std::max({q.x, q.y, q.z});
-        }
-        case ShapeType::Capsule: {
-            const Vec3 axisPoint(0.0f, std::clamp(p.y, -shape.halfHeight, shape.halfHeight), 0.0f);
-            return glm::length(p - axisPoint) - shape.radius;
-        }
-        case ShapeType::Cylinder:
-            return std::max(std::sqrt(p.x * p.x + p.z * p.z) - shape.radius, std::abs(p.y) - shape.halfHeight);
-        case ShapeType::ConvexHull: {
-            float worst = -std::numeric_limits<float>::infinity();
-            for (const HullFace& f : shape.hull->faces()) worst = std::max(worst, glm::dot(f.normal, p) - f.offset);
-            return worst;
-        }
-    }
-    return 0.0f;
-}
-
 Shape scaled(const Shape& s, float k) {
     switch (s.type) {
         case ShapeType::Sphere: return Shape::sphere(s.radius * k);

@@ -67,36 +67,6 @@ bool contains(const Shape& shape, const Transform& t, const Vec3& world) {
     return false;
 }
 
-// Positive outside, <= 0 inside. Exact outside for sphere, capsule, box and cylinder; for hulls the
-// largest plane distance, which never exceeds the true distance.
-float outsideBy(const Shape& shape, const Transform& t, const Vec3& world) {
-    const Vec3 p = t.applyInverse(world);
-    switch (shape.type) {
-        case ShapeType::Sphere: return glm::length(p) - shape.radius;
-        case ShapeType::Box: {
-            const Vec3 q = glm::abs(p) - shape.halfExtents;
-            const float outside = glm::length(glm::max(q, Vec3(0.0f)));
-            return outside > 0.0f ? outside : std::max({q.x, q.y, q.z});
-        }
-        case ShapeType::Capsule: {
-            const Vec3 axisPoint(0.0f, std::clamp(p.y, -shape.halfHeight, shape.halfHeight), 0.0f);
-            return glm::length(p - axisPoint) - shape.radius;
-        }
-        case ShapeType::Cylinder: {
-            const float radial = std::sqrt(p.x * p.x + p.z * p.z) - shape.radius;
-            const float axial = std::abs(p.y) - shape.halfHeight;
-            if (radial > 0.0f && axial > 0.0f) return std::sqrt(radial * radial + axial * axial);
-            return std::max(radial, axial);
-        }
-        case ShapeType::ConvexHull: {
-            float worst = -std::numeric_limits<float>::infinity();
-            for (const HullFace& f : shape.hull->faces()) worst = std::max(worst, glm::dot(f.normal, p) - f.offset);
-            return worst;
-        }
-    }
-    return 0.0f;
-}
-
 bool isFiniteHit(const RayCastHit& hit) { return isFinite(hit.fraction) && isFinite(hit.point) && isFinite(hit.normal); }
 
 // Checks what every hit must satisfy; returns an empty string or the first failure.

@@ -3,6 +3,7 @@
 // against the analytic support function and brute-force surface sampling, tight local and world
 // bounds, volumes and minimum extents.
 
+#include "support/geometry.h"
 #include "simcore/shapes/shape.h"
 
 #include <QtTest>
@@ -16,6 +17,7 @@
 #include <vector>
 
 using namespace simcore;
+using test_support::signedDistance;
 
 using PointCloud = std::vector<Vec3>;
 Q_DECLARE_METATYPE(simcore::Shape)
@@ -80,33 +82,6 @@ Shape irregularHull() {
     PointCloud points;
     for (int i = 0; i < 200; ++i) points.push_back(random.unitVector() * Vec3(0.6f, 1.1f, 0.4f) * random.uniform(0.3f, 1.0f));
     return hullShape(points);
-}
-
-// Signed distance from the shape's surface (exact for the primitives; the largest face-plane
-// distance for hulls, which is zero exactly on the surface).
-float signedDistance(const Shape& shape, const Vec3& p) {
-    switch (shape.type) {
-    case ShapeType::Sphere:
-        return glm::length(p) - shape.radius;
-    case ShapeType::Box: {
-        const Vec3 q = glm::abs(p) - shape.halfExtents;
-        return glm::length(glm::max(q, Vec3(0.0f))) + std::min(std::max({q.x, q.y, q.z}), 0.0f);
-    }
-    case ShapeType::Capsule: {
-        const float y = std::clamp(p.y, -shape.halfHeight, shape.halfHeight);
-        return glm::length(p - Vec3(0.0f, y, 0.0f)) - shape.radius;
-    }
-    case ShapeType::Cylinder: {
-        const glm::vec2 d(std::sqrt(p.x * p.x + p.z * p.z) - shape.radius, std::abs(p.y) - shape.halfHeight);
-        return std::min(std::max(d.x, d.y), 0.0f) + glm::length(glm::max(d, glm::vec2(0.0f)));
-    }
-    case ShapeType::ConvexHull: {
-        float distance = -std::numeric_limits<float>::max();
-        for (const HullFace& f : shape.hull->faces()) distance = std::max(distance, glm::dot(f.normal, p) - f.offset);
-        return distance;
-    }
-    }
-    return 0.0f;
 }
 
 // Dense samples of the shape's surface, edges and rims included.

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -49,6 +50,38 @@ inline float extentAlong(const Shape& shape, const Transform& t, const Vec3& dir
 inline float sizeOf(const Shape& shape) {
     const Aabb bounds = localBounds(shape);
     return glm::length(bounds.max - bounds.min);
+}
+
+// Signed distance from a point in the shape's local frame to its surface: negative inside. Exact
+// for every primitive; for hulls the largest face-plane distance, exact inside and on faces and
+// never more than the true distance outside.
+inline float signedDistance(const Shape& shape, const Vec3& p) {
+    switch (shape.type) {
+        case ShapeType::Sphere: return glm::length(p) - shape.radius;
+        case ShapeType::Box: {
+            const Vec3 q = glm::abs(p) - shape.halfExtents;
+            return glm::length(glm::max(q, Vec3(0.0f))) + std::min(std::max({q.x, q.y, q.z}), 0.0f);
+        }
+        case ShapeType::Capsule: {
+            const float y = std::clamp(p.y, -shape.halfHeight, shape.halfHeight);
+            return glm::length(p - Vec3(0.0f, y, 0.0f)) - shape.radius;
+        }
+        case ShapeType::Cylinder: {
+            const glm::vec2 d(std::sqrt(p.x * p.x + p.z * p.z) - shape.radius, std::abs(p.y) - shape.halfHeight);
+            return std::min(std::max(d.x, d.y), 0.0f) + glm::length(glm::max(d, glm::vec2(0.0f)));
+        }
+        case ShapeType::ConvexHull: {
+            float distance = -std::numeric_limits<float>::max();
+            for (const HullFace& f : shape.hull->faces()) distance = std::max(distance, glm::dot(f.normal, p) - f.offset);
+            return distance;
+        }
+    }
+    return 0.0f;
+}
+
+// The same for a placed shape and a world point.
+inline float outsideBy(const Shape& shape, const Transform& t, const Vec3& world) {
+    return signedDistance(shape, t.applyInverse(world));
 }
 
 // A hull the test needs; failing to build one is a broken test, not a result.
