@@ -1,11 +1,18 @@
 #include "simcore/dynamics/contact_solver.h"
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cmath>
 
 namespace simcore {
 
 namespace {
+
+using simd::FloatW;
+using simd::MaskW;
+using simd::SymMat3W;
+using simd::Vec3W;
 
 // Orthonormal tangents from a unit normal without branches on near-parallel axes (Duff et al.,
 // "Building an Orthonormal Basis, Revisited", 2017). Continuous in the normal, so warm-started
@@ -40,22 +47,128 @@ void frictionAxes(const ContactManifold& manifold, const BodyStorage& bodies, st
     }
 }
 
-// Velocities of a constraint's two bodies, loaded once per constraint and written back after.
-struct BodyPairVelocity {
-    Vec3 linearA, angularA, linearB, angularB;
+float relativeVelocity(const BodyStorage& bodies, std::size_t a, std::size_t b, const Vec3& anchorA,
+                       const Vec3& anchorB, const Vec3& axis) {
+    const Vec3 va = bodies.linearVelocity[a] + glm::cross(bodies.angularVelocity[a], anchorA);
+    const Vec3 vb = bodies.linearVelocity[b] + glm::cross(bodies.angularVelocity[b], anchorB);
+    return glm::dot(vb - va, axis);
+}
 
-    // Relative velocity of B with respect to A along a row.
-    float along(const Vec3& axis, const Vec3& angularJacobianA, const Vec3& angularJacobianB) const {
-        return glm::dot(linearB - linearA, axis) + glm::dot(angularB, angularJacobianB) -
-               glm::dot(angularA, angularJacobianA);
+void setLanes(FloatW (&wide)[3], int lane, const Vec3& v) {
+    wide[0].setLane(lane, v.x);
+    wide[1].setLane(lane, v.y);
+    wide[2].setLane(lane, v.z);
+}
+
+void setLanes(FloatW (&wide)[6], int lane, const Mat3& m) {  // symmetric: xx yy zz xy xz yz
+    wide[0].setLane(lane, m[0][0]);
+    wide[1].setLane(lane, m[1][1]);
+    wide[2].setLane(lane, m[2][2]);
+    wide[3].setLane(lane, m[1][0]);
+    wide[4].setLane(lane, m[2][0]);
+    wide[5].setLane(lane, m[2][1]);
+}
+
+SIMCORE_SIMD_INLINE Vec3W load(const FloatW (&wide)[3]) { return {wide[0], wide[1], wide[2]}; }
+SIMCORE_SIMD_INLINE SymMat3W load(const FloatW (&wide)[6]) { return {wide[0], wide[1], wide[2], wide[3], wide[4], wide[5]}; }
+
+// The two bodies of every lane, gathered from the solver's body rows and scattered back after.
+struct WideBodies {
+    Vec3W linearA, angularA, linearB, angularB;
+};
+
+SIMCORE_SIMD_INLINE WideBodies gatherVelocities(const float* rows, const std::int32_t* bodyA, const std::int32_t* bodyB) {
+    FloatW a[8], b[8];
+    simd::gatherRows(rows, bodyA, a);
+    simd::gatherRows(rows, bodyB, b);
+    return {{a[0], a[1], a[2]}, {a[4], a[5], a[6]}, {b[0], b[1], b[2]}, {b[4], b[5], b[6]}};
+}
+
+SIMCORE_SIMD_INLINE void scatterVelocities(float* rows, const std::int32_t* bodyA, const std::int32_t* bodyB, const WideBodies& v) {
+    const FloatW zero = FloatW::zero();
+    const FloatW a[8] = {v.linearA.x, v.linearA.y, v.linearA.z, zero, v.angularA.x, v.angularA.y, v.angularA.z, zero};
+    const FloatW b[8] = {v.linearB.x, v.linearB.y, v.linearB.z, zero, v.angularB.x, v.angularB.y, v.angularB.z, zero};
+    // A immovable or non-moving body may sit in several lanes; its velocity is unchanged in each,
+    // so the repeated stores agree.
+    simd::scatterRows(rows, bodyA, a);
+    simd::scatterRows(rows, bodyB, b);
+}
+
+// (R - I) for the rotation of a unit quaternion (x, y, z, w): how a body's anchors moved.
+struct RotationDeltaW {
+    FloatW m[3][3];
+
+    SIMCORE_SIMD_INLINE RotationDeltaW(FloatW x, FloatW y, FloatW z, FloatW w) {
+        const FloatW two = FloatW::splat(2.0f);
+        const FloatW xx = x * x, yy = y * y, zz = z * z, xy = x * y, xz = x * z, yz = y * z;
+        const FloatW wx = w * x, wy = w * y, wz = w * z;
+        m[0][0] = -two * (yy + zz);
+        m[0][1] = two * (xy - wz);
+        m[0][2] = two * (xz + wy);
+        m[1][0] = two * (xy + wz);
+        m[1][1] = -two * (xx + zz);
+        m[1][2] = two * (yz - wx);
+        m[2][0] = two * (xz - wy);
+        m[2][1] = two * (yz + wx);
+        m[2][2] = -two * (xx + yy);
     }
+    SIMCORE_SIMD_INLINE Vec3W operator*(const Vec3W& v) const {
+        return {mulAdd(m[0][0], v.x, mulAdd(m[0][1], v.y, m[0][2] * v.z)),
+                mulAdd(m[1][0], v.x, mulAdd(m[1][1], v.y, m[1][2] * v.z)),
+                mulAdd(m[2][0], v.x, mulAdd(m[2][1], v.y, m[2][2] * v.z))};
+    }
+};
+
+// Applies an impulse `linear` at the anchors: -linear on A, +linear on B.
+SIMCORE_SIMD_INLINE void applyImpulse(WideBodies& v, const Vec3W& linear, const Vec3W& angularA, const Vec3W& angularB,
+                  FloatW inverseMassA, FloatW inverseMassB, const SymMat3W& inverseInertiaA,
+                  const SymMat3W& inverseInertiaB) {
+    v.linearA = v.linearA - linear * inverseMassA;
+    v.angularA = v.angularA - inverseInertiaA * angularA;
+    v.linearB = mulAdd(linear, inverseMassB, v.linearB);
+    v.angularB = v.angularB + inverseInertiaB * angularB;
+}
+
+// Relative velocity of B's anchor with respect to A's along an axis; rA x axis and rB x axis given.
+SIMCORE_SIMD_INLINE FloatW alongAxis(const WideBodies& v, const Vec3W& axis, const Vec3W& angularA, const Vec3W& angularB) {
+    return dot(v.linearB - v.linearA, axis) + dot(v.angularB, angularB) - dot(v.angularA, angularA);
+}
+
+// 1 / (J M^-1 J^T) of a row along `axis` at the two anchors; zero where neither body can move.
+SIMCORE_SIMD_INLINE FloatW effectiveMass(FloatW inverseMassSum, const SymMat3W& inverseInertiaA,
+                                         const SymMat3W& inverseInertiaB, const Vec3W& anchorA, const Vec3W& anchorB,
+                                         const Vec3W& axis) {
+    const Vec3W angularA = cross(anchorA, axis), angularB = cross(anchorB, axis);
+    const FloatW k = inverseMassSum + dot(angularA, inverseInertiaA * angularA) + dot(angularB, inverseInertiaB * angularB);
+    const FloatW zero = FloatW::zero();
+    return select(k > zero, FloatW::splat(1.0f) / simd::max(k, FloatW::splat(1e-30f)), zero);
+}
+
+// How a solve pass turns separation into a velocity target. Speculative points (separation > 0)
+// may close the gap in one substep and no more; overlapping ones are pushed out by the chosen
+// position correction, or not at all in relax passes.
+struct Correction {
+    enum class Mode { None, Soft, Baumgarte } mode;
+    FloatW inverseH, biasRate, massScale, impulseScale, maxPush, baumgarte, linearSlop;
 };
 
 }  // namespace
 
+std::int32_t ContactSolver::solverBody(std::size_t denseIndex, const BodyStorage& bodies) {
+    if (bodies.motion[denseIndex] == MotionType::Static) return 0;
+    std::int32_t& index = denseToSolver_[denseIndex];
+    if (index < 0) {
+        index = static_cast<std::int32_t>(references_.size());
+        const bool moves = bodies.motion[denseIndex] == MotionType::Dynamic && bodies.awake[denseIndex];
+        references_.push_back({static_cast<std::uint32_t>(denseIndex), moves, bodies.centerOfMass[denseIndex],
+                               bodies.orientation[denseIndex]});
+        bodyColors_.push_back(0);
+    }
+    return index;
+}
+
 void ContactSolver::prepare(const std::vector<Contact>& contacts, const BodyStorage& bodies, const Params& params) {
     params_ = params;
-    constraints_.clear();
     maxPenetration_ = 0.0f;
     usesFriction_ = false;
     usesRestitution_ = false;
@@ -73,199 +186,332 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const BodyStor
     massScale_ = a2 * a3;
     impulseScale_ = a3;
 
+    // Solver bodies: entry 0 stands for every static body (zero velocity, never moves).
+    references_.clear();
+    references_.push_back({0, false, Vec3(0.0f), Quat(1.0f, 0.0f, 0.0f, 0.0f)});
+    bodyColors_.assign(1, 0);
+    denseToSolver_.assign(bodies.size(), -1);
+
+    // Colour greedily in contact order (deterministic): the lowest colour free at both moving
+    // bodies. Immovable bodies are only read, so any number of lanes may share them. A manifold
+    // that finds no free colour goes to the overflow, solved one manifold per batch.
+    constexpr int kColorCount = 64;
+    constexpr int kOverflow = kColorCount;
+    std::array<std::uint32_t, kColorCount + 1> perColor{};
+    order_.clear();
+    colorOf_.clear();
     for (std::size_t ci = 0; ci < contacts.size(); ++ci) {
         const Contact& contact = contacts[ci];
-        const ContactManifold& manifold = contact.manifold;
-        if (manifold.pointCount == 0) continue;
+        if (contact.manifold.pointCount == 0) continue;
         const std::size_t a = bodies.denseIndexOfSlot(contact.slotA);
         const std::size_t b = bodies.denseIndexOfSlot(contact.slotB);
         const bool movesA = bodies.motion[a] == MotionType::Dynamic && bodies.awake[a];
         const bool movesB = bodies.motion[b] == MotionType::Dynamic && bodies.awake[b];
         if (!movesA && !movesB) continue;
+        const std::int32_t sa = solverBody(a, bodies), sb = solverBody(b, bodies);
+        const std::uint64_t used = (movesA ? bodyColors_[sa] : 0) | (movesB ? bodyColors_[sb] : 0);
+        int color = kOverflow;
+        if (used != ~std::uint64_t{0}) {
+            color = std::countr_zero(~used);
+            const std::uint64_t bit = std::uint64_t{1} << color;
+            if (movesA) bodyColors_[sa] |= bit;
+            if (movesB) bodyColors_[sb] |= bit;
+        }
+        order_.push_back(static_cast<std::uint32_t>(ci));
+        colorOf_.push_back(static_cast<std::uint8_t>(color));
+        ++perColor[color];
+    }
+    constraintCount_ = order_.size();
 
-        Constraint& c = constraints_.emplace_back();
-        c.contactIndex = static_cast<std::uint32_t>(ci);
-        c.bodyA = static_cast<std::uint32_t>(a);
-        c.bodyB = static_cast<std::uint32_t>(b);
-        c.inverseMassA = movesA ? bodies.inverseMass[a] : 0.0f;
-        c.inverseMassB = movesB ? bodies.inverseMass[b] : 0.0f;
+    // Batches colour by colour; a colour's manifolds fill lanes in contact order.
+    std::array<std::uint32_t, kColorCount + 1> firstBatch{}, filled{};
+    std::uint32_t batchCount = 0;
+    colorCount_ = 0;
+    for (int color = 0; color <= kColorCount; ++color) {
+        firstBatch[color] = batchCount;
+        const std::uint32_t lanes = color == kOverflow ? 1 : kLanes;
+        batchCount += (perColor[color] + lanes - 1) / lanes;
+        if (perColor[color] > 0) ++colorCount_;
+    }
+    batches_.assign(batchCount, ManifoldBatch{});
+
+    for (std::size_t k = 0; k < order_.size(); ++k) {
+        const std::uint32_t ci = order_[k];
+        const int color = colorOf_[k];
+        const std::uint32_t lanes = color == kOverflow ? 1 : kLanes;
+        const std::uint32_t slot = filled[color]++;
+        ManifoldBatch& batch = batches_[firstBatch[color] + slot / lanes];
+        const int lane = static_cast<int>(slot % lanes);
+
+        const Contact& contact = contacts[ci];
+        const ContactManifold& manifold = contact.manifold;
+        const std::size_t a = bodies.denseIndexOfSlot(contact.slotA);
+        const std::size_t b = bodies.denseIndexOfSlot(contact.slotB);
+        const bool movesA = bodies.motion[a] == MotionType::Dynamic && bodies.awake[a];
+        const bool movesB = bodies.motion[b] == MotionType::Dynamic && bodies.awake[b];
+        batch.bodyA[lane] = solverBody(a, bodies);
+        batch.bodyB[lane] = solverBody(b, bodies);
+        batch.contactIndex[lane] = ci;
+        batch.pointCount[lane] = static_cast<std::uint8_t>(manifold.pointCount);
+        batch.maxPointCount = std::max(batch.maxPointCount, batch.pointCount[lane]);
+
+        const float inverseMassA = movesA ? bodies.inverseMass[a] : 0.0f;
+        const float inverseMassB = movesB ? bodies.inverseMass[b] : 0.0f;
         const Mat3 inverseInertiaA = movesA ? bodies.inverseInertiaWorld[a] : Mat3(0.0f);
         const Mat3 inverseInertiaB = movesB ? bodies.inverseInertiaWorld[b] : Mat3(0.0f);
-        c.axes[kNormal] = manifold.normal;
-        frictionAxes(manifold, bodies, a, b, c.axes[kTangent1], c.axes[kTangent2]);
-        // With friction off (or zero for this pair) no friction rows are built at all.
-        c.friction = params.friction ? contact.friction : 0.0f;
-        c.restitution = params.restitution ? contact.restitution : 0.0f;
-        usesFriction_ = usesFriction_ || c.friction > 0.0f;
-        usesRestitution_ = usesRestitution_ || c.restitution > 0.0f;
-        c.pointCount = manifold.pointCount;
-        const int rows = c.friction > 0.0f ? kRowCount : 1;
+        batch.inverseMassA.setLane(lane, inverseMassA);
+        batch.inverseMassB.setLane(lane, inverseMassB);
+        setLanes(batch.inverseInertiaA, lane, inverseInertiaA);
+        setLanes(batch.inverseInertiaB, lane, inverseInertiaB);
 
-        const float inverseMassSum = c.inverseMassA + c.inverseMassB;
-        const Quat inverseRotationA = glm::conjugate(bodies.orientation[a]);
-        const Quat inverseRotationB = glm::conjugate(bodies.orientation[b]);
+        const Vec3& normal = manifold.normal;
+        Vec3 tangent1, tangent2;
+        frictionAxes(manifold, bodies, a, b, tangent1, tangent2);
+        setLanes(batch.normal, lane, normal);
+        setLanes(batch.tangent1, lane, tangent1);
+        setLanes(batch.tangent2, lane, tangent2);
+        // With friction off (or zero for this pair) the friction rows have zero mass: no effect.
+        const float friction = params.friction ? contact.friction : 0.0f;
+        const float restitution = params.restitution ? contact.restitution : 0.0f;
+        batch.friction.setLane(lane, friction);
+        batch.restitution.setLane(lane, restitution);
+        batch.anyFriction = batch.anyFriction || friction > 0.0f;
+        batch.anyRestitution = batch.anyRestitution || restitution > 0.0f;
+        usesFriction_ = usesFriction_ || friction > 0.0f;
+        usesRestitution_ = usesRestitution_ || restitution > 0.0f;
+
         for (int i = 0; i < manifold.pointCount; ++i) {
             const ContactPoint& mp = manifold.points[i];
-            Point& p = c.points[i];
+            PointBatch& p = batch.points[i];
             // Both anchors at the midpoint: then the separation's change is just the change of
             // (anchorB - anchorA) along the normal as the bodies move.
             const Vec3 mid = 0.5f * (mp.pointA + mp.pointB);
             const Vec3 anchorA = mid - bodies.centerOfMass[a];
             const Vec3 anchorB = mid - bodies.centerOfMass[b];
-            p.localAnchorA = inverseRotationA * anchorA;
-            p.localAnchorB = inverseRotationB * anchorB;
-            p.baseSeparation = mp.separation;
-            for (int row = 0; row < rows; ++row) {
-                p.angularA[row] = glm::cross(anchorA, c.axes[row]);
-                p.angularB[row] = glm::cross(anchorB, c.axes[row]);
-                p.weightedA[row] = inverseInertiaA * p.angularA[row];
-                p.weightedB[row] = inverseInertiaB * p.angularB[row];
-                const float k = inverseMassSum + glm::dot(p.angularA[row], p.weightedA[row]) +
-                                glm::dot(p.angularB[row], p.weightedB[row]);
-                p.mass[row] = k > 0.0f ? 1.0f / k : 0.0f;
-            }
+            setLanes(p.anchorA, lane, anchorA);
+            setLanes(p.anchorB, lane, anchorB);
+            p.baseSeparation.setLane(lane, mp.separation);
             const ContactImpulse& warm = contact.impulses[i];
-            p.impulse[kNormal] = warm.normal;
-            p.impulse[kTangent1] = rows > 1 ? glm::dot(warm.friction, c.axes[kTangent1]) : 0.0f;
-            p.impulse[kTangent2] = rows > 1 ? glm::dot(warm.friction, c.axes[kTangent2]) : 0.0f;
-            p.maxNormalImpulse = 0.0f;
-            const BodyPairVelocity v{bodies.linearVelocity[a], bodies.angularVelocity[a], bodies.linearVelocity[b],
-                                     bodies.angularVelocity[b]};
-            p.approachVelocity = v.along(c.axes[kNormal], p.angularA[kNormal], p.angularB[kNormal]);
+            p.normalImpulse.setLane(lane, warm.normal);
+            if (friction > 0.0f) {
+                p.tangentImpulse1.setLane(lane, glm::dot(warm.friction, tangent1));
+                p.tangentImpulse2.setLane(lane, glm::dot(warm.friction, tangent2));
+            }
+            p.approachVelocity.setLane(lane, relativeVelocity(bodies, a, b, anchorA, anchorB, normal));
             maxPenetration_ = std::max(maxPenetration_, -mp.separation);
         }
     }
-}
 
-namespace {
-
-// Loads and stores the two bodies' velocities around a constraint's update. Static, kinematic
-// and sleeping bodies have zero inverse mass in the constraint: their write-back is a no-op.
-template <typename Constraint, typename Update>
-void updateVelocities(BodyStorage& bodies, Constraint& c, Update&& update) {
-    BodyPairVelocity v{bodies.linearVelocity[c.bodyA], bodies.angularVelocity[c.bodyA],
-                       bodies.linearVelocity[c.bodyB], bodies.angularVelocity[c.bodyB]};
-    update(v);
-    bodies.linearVelocity[c.bodyA] = v.linearA;
-    bodies.angularVelocity[c.bodyA] = v.angularA;
-    bodies.linearVelocity[c.bodyB] = v.linearB;
-    bodies.angularVelocity[c.bodyB] = v.angularB;
-}
-
-template <typename Constraint, typename Point>
-void applyRow(BodyPairVelocity& v, const Constraint& c, const Point& p, int row, float impulse) {
-    const Vec3 linear = impulse * c.axes[row];
-    v.linearA -= c.inverseMassA * linear;
-    v.angularA -= impulse * p.weightedA[row];
-    v.linearB += c.inverseMassB * linear;
-    v.angularB += impulse * p.weightedB[row];
-}
-
-}  // namespace
-
-void ContactSolver::warmStart(BodyStorage& bodies) const {
-    for (const Constraint& c : constraints_) {
-        const int rows = c.friction > 0.0f ? kRowCount : 1;
-        updateVelocities(bodies, c, [&](BodyPairVelocity& v) {
-            for (int i = 0; i < c.pointCount; ++i)
-                for (int row = 0; row < rows; ++row) applyRow(v, c, c.points[i], row, c.points[i].impulse[row]);
-        });
+    // Effective masses, a batch at a time; zero for the rows of absent points and of frictionless
+    // lanes, so those rows do nothing.
+    const FloatW zero = FloatW::zero();
+    for (ManifoldBatch& c : batches_) {
+        const FloatW inverseMassSum = c.inverseMassA + c.inverseMassB;
+        const SymMat3W inverseInertiaA = load(c.inverseInertiaA), inverseInertiaB = load(c.inverseInertiaB);
+        const Vec3W normal = load(c.normal), tangent1 = load(c.tangent1), tangent2 = load(c.tangent2);
+        const MaskW hasFriction = c.friction > zero;
+        FloatW pointCount = zero;
+        for (int lane = 0; lane < kLanes; ++lane) pointCount.setLane(lane, c.pointCount[lane]);
+        for (int i = 0; i < c.maxPointCount; ++i) {
+            PointBatch& p = c.points[i];
+            const MaskW exists = pointCount > FloatW::splat(static_cast<float>(i));
+            const Vec3W anchorA = load(p.anchorA), anchorB = load(p.anchorB);
+            auto rowMass = [&](const Vec3W& axis) {
+                return effectiveMass(inverseMassSum, inverseInertiaA, inverseInertiaB, anchorA, anchorB, axis);
+            };
+            p.normalMass = select(exists, rowMass(normal), zero);
+            if (!c.anyFriction) continue;
+            p.tangentMass1 = select(exists & hasFriction, rowMass(tangent1), zero);
+            p.tangentMass2 = select(exists & hasFriction, rowMass(tangent2), zero);
+        }
     }
+
+    velocities_.assign(references_.size(), BodyRow{});
+    motion_.assign(references_.size(), BodyRow{});
+    motion_[0].value[7] = 1.0f;  // the immovable body's rotation: identity
+}
+
+void ContactSolver::loadVelocities(const BodyStorage& bodies) {
+    for (std::size_t s = 1; s < references_.size(); ++s) {
+        const std::uint32_t i = references_[s].denseIndex;
+        const Vec3& v = bodies.linearVelocity[i];
+        const Vec3& w = bodies.angularVelocity[i];
+        velocities_[s] = {{v.x, v.y, v.z, 0.0f, w.x, w.y, w.z, 0.0f}};
+    }
+}
+
+void ContactSolver::loadMotion(const BodyStorage& bodies) {
+    for (std::size_t s = 1; s < references_.size(); ++s) {
+        const BodyReference& ref = references_[s];
+        const Vec3 d = bodies.centerOfMass[ref.denseIndex] - ref.centerOfMass;
+        const Quat q = bodies.orientation[ref.denseIndex] * glm::conjugate(ref.orientation);
+        motion_[s] = {{d.x, d.y, d.z, 0.0f, q.x, q.y, q.z, q.w}};
+    }
+}
+
+void ContactSolver::storeVelocities(BodyStorage& bodies) const {
+    for (std::size_t s = 1; s < references_.size(); ++s) {
+        const BodyReference& ref = references_[s];
+        if (!ref.moves) continue;
+        const float* row = velocities_[s].value;
+        bodies.linearVelocity[ref.denseIndex] = Vec3(row[0], row[1], row[2]);
+        bodies.angularVelocity[ref.denseIndex] = Vec3(row[4], row[5], row[6]);
+    }
+}
+
+void ContactSolver::warmStart(BodyStorage& bodies) {
+    loadVelocities(bodies);
+    float* rows = velocities_.data()->value;
+    for (const ManifoldBatch& c : batches_) {
+        WideBodies v = gatherVelocities(rows, c.bodyA, c.bodyB);
+        const Vec3W normal = load(c.normal), tangent1 = load(c.tangent1), tangent2 = load(c.tangent2);
+        const SymMat3W inverseInertiaA = load(c.inverseInertiaA), inverseInertiaB = load(c.inverseInertiaB);
+        for (int i = 0; i < c.maxPointCount; ++i) {
+            const PointBatch& p = c.points[i];
+            const Vec3W impulse =
+                mulAdd(normal, p.normalImpulse, mulAdd(tangent1, p.tangentImpulse1, tangent2 * p.tangentImpulse2));
+            applyImpulse(v, impulse, cross(load(p.anchorA), impulse), cross(load(p.anchorB), impulse), c.inverseMassA,
+                         c.inverseMassB, inverseInertiaA, inverseInertiaB);
+        }
+        scatterVelocities(rows, c.bodyA, c.bodyB, v);
+    }
+    storeVelocities(bodies);
 }
 
 void ContactSolver::solve(BodyStorage& bodies, bool useBias) {
+    loadVelocities(bodies);
+    loadMotion(bodies);
+    Correction correction;
+    if (!useBias)
+        correction.mode = Correction::Mode::None;
+    else if (params_.solver.positionCorrection == PositionCorrection::SoftStep)
+        correction.mode = Correction::Mode::Soft;
+    else
+        correction.mode = Correction::Mode::Baumgarte;
     const float inverseH = 1.0f / params_.substepDt;
-    const bool soft = params_.solver.positionCorrection == PositionCorrection::SoftStep;
-    const float maxPush = params_.solver.maxPushVelocity;
+    correction.inverseH = FloatW::splat(inverseH);
+    correction.biasRate = FloatW::splat(biasRate_);
+    correction.massScale = FloatW::splat(massScale_);
+    correction.impulseScale = FloatW::splat(impulseScale_);
+    correction.maxPush = FloatW::splat(-params_.solver.maxPushVelocity);
+    correction.baumgarte = FloatW::splat(params_.solver.baumgarte * inverseH);
+    correction.linearSlop = FloatW::splat(params_.contact.linearSlop);
+    const FloatW zero = FloatW::zero(), one = FloatW::splat(1.0f);
 
-    for (Constraint& c : constraints_) {
-        // Separation now, from how far the anchors moved since prepare: one rotation matrix per
-        // body serves all of the constraint's points.
-        const Mat3 rotationA = glm::mat3_cast(bodies.orientation[c.bodyA]);
-        const Mat3 rotationB = glm::mat3_cast(bodies.orientation[c.bodyB]);
-        const Vec3 offset = bodies.centerOfMass[c.bodyB] - bodies.centerOfMass[c.bodyA];
-        const Vec3& normal = c.axes[kNormal];
+    float* rows = velocities_.data()->value;
+    const float* motion = motion_.data()->value;
+    for (ManifoldBatch& c : batches_) {
+        WideBodies v = gatherVelocities(rows, c.bodyA, c.bodyB);
+        const Vec3W normal = load(c.normal);
+        const SymMat3W inverseInertiaA = load(c.inverseInertiaA), inverseInertiaB = load(c.inverseInertiaB);
 
-        updateVelocities(bodies, c, [&](BodyPairVelocity& v) {
-            for (int i = 0; i < c.pointCount; ++i) {
-                Point& p = c.points[i];
-                const Vec3 d = offset + rotationB * p.localAnchorB - rotationA * p.localAnchorA;
-                const float separation = p.baseSeparation + glm::dot(d, normal);
+        // Separation now, from how far each body moved and turned since prepare.
+        FloatW motionA[8], motionB[8];
+        simd::gatherRows(motion, c.bodyA, motionA);
+        simd::gatherRows(motion, c.bodyB, motionB);
+        const Vec3W shift = Vec3W{motionB[0], motionB[1], motionB[2]} - Vec3W{motionA[0], motionA[1], motionA[2]};
+        const RotationDeltaW turnA(motionA[4], motionA[5], motionA[6], motionA[7]);
+        const RotationDeltaW turnB(motionB[4], motionB[5], motionB[6], motionB[7]);
 
-                float bias = 0.0f, massScale = 1.0f, impulseScale = 0.0f;
-                if (separation > 0.0f) {
-                    bias = separation * inverseH;  // speculative: arrive exactly at contact, no earlier
-                } else if (useBias) {
-                    if (soft) {
-                        bias = std::max(biasRate_ * separation, -maxPush);
-                        massScale = massScale_;
-                        impulseScale = impulseScale_;
-                    } else {
-                        const float overlap = std::min(separation + params_.contact.linearSlop, 0.0f);
-                        bias = std::max(params_.solver.baumgarte * inverseH * overlap, -maxPush);
-                    }
-                }
-                const float vn = v.along(normal, p.angularA[kNormal], p.angularB[kNormal]);
-                const float lambda = -p.mass[kNormal] * massScale * (vn + bias) - impulseScale * p.impulse[kNormal];
-                const float accumulated = std::max(p.impulse[kNormal] + lambda, 0.0f);
-                const float delta = accumulated - p.impulse[kNormal];
-                p.impulse[kNormal] = accumulated;
-                p.maxNormalImpulse = std::max(p.maxNormalImpulse, delta);
-                applyRow(v, c, p, kNormal, delta);
+        for (int i = 0; i < c.maxPointCount; ++i) {
+            PointBatch& p = c.points[i];
+            const Vec3W anchorA = load(p.anchorA), anchorB = load(p.anchorB);
+            const Vec3W d = shift + turnB * anchorB - turnA * anchorA;
+            const FloatW separation = p.baseSeparation + dot(d, normal);
+
+            const MaskW speculative = separation > zero;
+            const FloatW arrive = separation * correction.inverseH;
+            FloatW bias = select(speculative, arrive, zero), massScale = one, impulseScale = zero;
+            if (correction.mode == Correction::Mode::Soft) {
+                bias = select(speculative, arrive, simd::max(correction.biasRate * separation, correction.maxPush));
+                massScale = select(speculative, one, correction.massScale);
+                impulseScale = select(speculative, zero, correction.impulseScale);
+            } else if (correction.mode == Correction::Mode::Baumgarte) {
+                const FloatW overlap = simd::min(separation + correction.linearSlop, zero);
+                bias = select(speculative, arrive, simd::max(correction.baumgarte * overlap, correction.maxPush));
             }
-            if (c.friction == 0.0f) return;
-            for (int i = 0; i < c.pointCount; ++i) {
-                Point& p = c.points[i];
-                const float limit = c.friction * p.impulse[kNormal];
-                // A point that pushes nothing and holds no friction would clamp to zero again:
-                // skip it (side contacts in piles and pyramids carry no load).
-                if (limit == 0.0f && p.impulse[kTangent1] == 0.0f && p.impulse[kTangent2] == 0.0f) continue;
-                float t1 = p.impulse[kTangent1] -
-                           p.mass[kTangent1] * v.along(c.axes[kTangent1], p.angularA[kTangent1], p.angularB[kTangent1]);
-                float t2 = p.impulse[kTangent2] -
-                           p.mass[kTangent2] * v.along(c.axes[kTangent2], p.angularA[kTangent2], p.angularB[kTangent2]);
+
+            const Vec3W angularA = cross(anchorA, normal), angularB = cross(anchorB, normal);
+            const FloatW vn = alongAxis(v, normal, angularA, angularB);
+            const FloatW lambda = -(p.normalMass * massScale * (vn + bias)) - impulseScale * p.normalImpulse;
+            const FloatW accumulated = simd::max(p.normalImpulse + lambda, zero);
+            const FloatW delta = accumulated - p.normalImpulse;
+            p.normalImpulse = accumulated;
+            p.maxNormalImpulse = simd::max(p.maxNormalImpulse, delta);
+            applyImpulse(v, normal * delta, angularA * delta, angularB * delta, c.inverseMassA, c.inverseMassB,
+                         inverseInertiaA, inverseInertiaB);
+        }
+
+        if (c.anyFriction) {
+            const Vec3W tangent1 = load(c.tangent1), tangent2 = load(c.tangent2);
+            for (int i = 0; i < c.maxPointCount; ++i) {
+                PointBatch& p = c.points[i];
+                const Vec3W anchorA = load(p.anchorA), anchorB = load(p.anchorB);
+                const Vec3W angularA1 = cross(anchorA, tangent1), angularB1 = cross(anchorB, tangent1);
+                const Vec3W angularA2 = cross(anchorA, tangent2), angularB2 = cross(anchorB, tangent2);
+                FloatW t1 = p.tangentImpulse1 - p.tangentMass1 * alongAxis(v, tangent1, angularA1, angularB1);
+                FloatW t2 = p.tangentImpulse2 - p.tangentMass2 * alongAxis(v, tangent2, angularA2, angularB2);
                 // Coulomb: the tangential impulse lies in a disc of radius friction * normal impulse.
-                const float length2 = t1 * t1 + t2 * t2;
-                if (length2 > limit * limit) {
-                    const float scale = limit / std::sqrt(length2);
-                    t1 *= scale;
-                    t2 *= scale;
-                }
-                applyRow(v, c, p, kTangent1, t1 - p.impulse[kTangent1]);
-                applyRow(v, c, p, kTangent2, t2 - p.impulse[kTangent2]);
-                p.impulse[kTangent1] = t1;
-                p.impulse[kTangent2] = t2;
+                const FloatW limit = c.friction * p.normalImpulse;
+                const FloatW length2 = t1 * t1 + t2 * t2;
+                const FloatW scale =
+                    select(length2 > limit * limit, limit / simd::sqrt(simd::max(length2, FloatW::splat(1e-30f))), one);
+                t1 = t1 * scale;
+                t2 = t2 * scale;
+                const FloatW delta1 = t1 - p.tangentImpulse1, delta2 = t2 - p.tangentImpulse2;
+                p.tangentImpulse1 = t1;
+                p.tangentImpulse2 = t2;
+                applyImpulse(v, mulAdd(tangent1, delta1, tangent2 * delta2), mulAdd(angularA1, delta1, angularA2 * delta2),
+                             mulAdd(angularB1, delta1, angularB2 * delta2), c.inverseMassA, c.inverseMassB,
+                             inverseInertiaA, inverseInertiaB);
             }
-        });
+        }
+        scatterVelocities(rows, c.bodyA, c.bodyB, v);
     }
+    storeVelocities(bodies);
 }
 
 void ContactSolver::applyRestitution(BodyStorage& bodies) {
-    const float threshold = params_.contact.restitutionThreshold;
-    for (Constraint& c : constraints_) {
-        if (c.restitution == 0.0f) continue;
-        updateVelocities(bodies, c, [&](BodyPairVelocity& v) {
-            for (int i = 0; i < c.pointCount; ++i) {
-                Point& p = c.points[i];
-                // Only points that approached fast enough and actually pushed bounce.
-                if (p.approachVelocity > -threshold || p.maxNormalImpulse == 0.0f) continue;
-                const float vn = v.along(c.axes[kNormal], p.angularA[kNormal], p.angularB[kNormal]);
-                const float lambda = -p.mass[kNormal] * (vn + c.restitution * p.approachVelocity);
-                const float accumulated = std::max(p.impulse[kNormal] + lambda, 0.0f);
-                applyRow(v, c, p, kNormal, accumulated - p.impulse[kNormal]);
-                p.impulse[kNormal] = accumulated;
-            }
-        });
+    loadVelocities(bodies);
+    const FloatW zero = FloatW::zero();
+    const FloatW threshold = FloatW::splat(-params_.contact.restitutionThreshold);
+    float* rows = velocities_.data()->value;
+    for (ManifoldBatch& c : batches_) {
+        if (!c.anyRestitution) continue;
+        WideBodies v = gatherVelocities(rows, c.bodyA, c.bodyB);
+        const Vec3W normal = load(c.normal);
+        const SymMat3W inverseInertiaA = load(c.inverseInertiaA), inverseInertiaB = load(c.inverseInertiaB);
+        for (int i = 0; i < c.maxPointCount; ++i) {
+            PointBatch& p = c.points[i];
+            // Only points that approached fast enough and actually pushed bounce.
+            const MaskW bounces =
+                (p.approachVelocity < threshold) & (p.maxNormalImpulse > zero) & (c.restitution > zero);
+            const Vec3W angularA = cross(load(p.anchorA), normal), angularB = cross(load(p.anchorB), normal);
+            const FloatW vn = alongAxis(v, normal, angularA, angularB);
+            const FloatW lambda = -(p.normalMass * mulAdd(c.restitution, p.approachVelocity, vn));
+            const FloatW accumulated = select(bounces, simd::max(p.normalImpulse + lambda, zero), p.normalImpulse);
+            const FloatW delta = accumulated - p.normalImpulse;
+            p.normalImpulse = accumulated;
+            applyImpulse(v, normal * delta, angularA * delta, angularB * delta, c.inverseMassA, c.inverseMassB,
+                         inverseInertiaA, inverseInertiaB);
+        }
+        scatterVelocities(rows, c.bodyA, c.bodyB, v);
     }
+    storeVelocities(bodies);
 }
 
 void ContactSolver::storeImpulses(std::vector<Contact>& contacts) const {
-    for (const Constraint& c : constraints_) {
-        Contact& contact = contacts[c.contactIndex];
-        for (int i = 0; i < c.pointCount; ++i) {
-            const Point& p = c.points[i];
-            contact.impulses[i] = {p.impulse[kNormal],
-                                   p.impulse[kTangent1] * c.axes[kTangent1] + p.impulse[kTangent2] * c.axes[kTangent2]};
+    for (const ManifoldBatch& c : batches_) {
+        for (int lane = 0; lane < kLanes; ++lane) {
+            if (c.pointCount[lane] == 0) continue;
+            Contact& contact = contacts[c.contactIndex[lane]];
+            const Vec3 tangent1(c.tangent1[0].lane(lane), c.tangent1[1].lane(lane), c.tangent1[2].lane(lane));
+            const Vec3 tangent2(c.tangent2[0].lane(lane), c.tangent2[1].lane(lane), c.tangent2[2].lane(lane));
+            for (int i = 0; i < c.pointCount[lane]; ++i) {
+                const PointBatch& p = c.points[i];
+                contact.impulses[i] = {p.normalImpulse.lane(lane),
+                                       p.tangentImpulse1.lane(lane) * tangent1 + p.tangentImpulse2.lane(lane) * tangent2};
+            }
         }
     }
 }

@@ -6,11 +6,18 @@
 // Within one World::step the solver is used as:
 //   prepare (once) -> for each substep { warmStart, solve(useBias=true) x N, [positions move],
 //   relax = solve(useBias=false) x M } -> applyRestitution -> storeImpulses.
+//
+// Data parallel: prepare colours the manifolds so that no two of one colour share a moving body,
+// and packs each colour into batches of simd::kWidth manifolds, one per lane, in structure-of-
+// arrays form. A batch is solved in one pass of wide arithmetic; colours run one after another,
+// which is Gauss-Seidel between colours and exact within one (its lanes touch disjoint bodies).
 
 #include "simcore/collision/contact_manager.h"
 #include "simcore/dynamics/body_storage.h"
+#include "simcore/math/simd.h"
 #include "simcore/world/world_settings.h"
 
+#include <cstdint>
 #include <vector>
 
 namespace simcore {
@@ -28,47 +35,73 @@ public:
     // Builds constraints for touching contacts with an awake dynamic body. Sleeping and static
     // bodies take part with infinite mass.
     void prepare(const std::vector<Contact>& contacts, const BodyStorage& bodies, const Params& params);
-    void warmStart(BodyStorage& bodies) const;
+    void warmStart(BodyStorage& bodies);
     void solve(BodyStorage& bodies, bool useBias);
     void applyRestitution(BodyStorage& bodies);
     void storeImpulses(std::vector<Contact>& contacts) const;
 
-    std::size_t constraintCount() const { return constraints_.size(); }
+    std::size_t constraintCount() const { return constraintCount_; }
+    std::size_t colorCount() const { return colorCount_; }
     // Whether any prepared constraint has friction rows / can bounce (effects that ran).
     bool usesFriction() const { return usesFriction_; }
     bool usesRestitution() const { return usesRestitution_; }
     float maxPenetration() const { return maxPenetration_; }  // at prepare time (m)
 
 private:
-    // Rows of a point: the normal, then the two friction tangents.
-    static constexpr int kNormal = 0, kTangent1 = 1, kTangent2 = 2, kRowCount = 3;
+    using FloatW = simd::FloatW;
+    static constexpr int kLanes = simd::kWidth;
 
-    struct Point {
-        Vec3 localAnchorA, localAnchorB;  // contact point relative to each centre of mass, body axes
-        float baseSeparation = 0.0f;      // separation at prepare (m)
-        // Per row: the angular Jacobians r x axis and their inertia-weighted forms I^-1 (r x axis),
-        // computed once per step so each iteration is dot products and multiply-adds.
-        Vec3 angularA[kRowCount], angularB[kRowCount];
-        Vec3 weightedA[kRowCount], weightedB[kRowCount];
-        float mass[kRowCount] = {};       // effective mass of each row (kg)
-        float impulse[kRowCount] = {};    // accumulated (N s)
-        float maxNormalImpulse = 0.0f;    // largest normal impulse this step: did the point push?
-        float approachVelocity = 0.0f;    // normal relative velocity at prepare (m/s), for restitution
+    // One contact point in every lane: anchors relative to each centre of mass at prepare (world
+    // axes), effective masses and accumulated impulses of its three rows.
+    struct PointBatch {
+        FloatW anchorA[3], anchorB[3];
+        FloatW baseSeparation;  // m, at prepare
+        FloatW normalMass, tangentMass1, tangentMass2;
+        FloatW normalImpulse, tangentImpulse1, tangentImpulse2;
+        FloatW maxNormalImpulse;  // largest normal impulse this step: did the point push?
+        FloatW approachVelocity;  // normal relative velocity at prepare (m/s), for restitution
     };
-    struct Constraint {
-        std::uint32_t contactIndex = 0;
-        std::uint32_t bodyA = 0, bodyB = 0;  // dense indices
-        float inverseMassA = 0.0f, inverseMassB = 0.0f;
-        Vec3 axes[kRowCount];  // normal (from A to B), tangent1, tangent2
-        float friction = 0.0f, restitution = 0.0f;
-        int pointCount = 0;
-        Point points[kMaxManifoldPoints];
+    // kLanes manifolds. Unused lanes and points have zero masses and so change nothing.
+    struct ManifoldBatch {
+        std::int32_t bodyA[kLanes], bodyB[kLanes];  // solver body indices (0: the immovable body)
+        FloatW inverseMassA, inverseMassB;
+        FloatW inverseInertiaA[6], inverseInertiaB[6];  // world, at prepare: xx yy zz xy xz yz
+        FloatW normal[3], tangent1[3], tangent2[3];     // normal from A to B
+        FloatW friction, restitution;
+        PointBatch points[kMaxManifoldPoints];
+        std::uint32_t contactIndex[kLanes];
+        std::uint8_t pointCount[kLanes];
+        std::uint8_t maxPointCount;
+        bool anyFriction, anyRestitution;
+    };
+    // Per solver body, rows of 8 floats for the wide gathers: velocity (linear xyz, pad, angular
+    // xyz, pad) and motion since prepare (centre of mass xyz, pad, rotation quaternion xyzw).
+    struct alignas(32) BodyRow {
+        float value[8];
+    };
+    struct BodyReference {
+        std::uint32_t denseIndex;
+        bool moves;  // awake and dynamic: velocities are written back
+        Vec3 centerOfMass;
+        Quat orientation;
     };
 
-    std::vector<Constraint> constraints_;
+    std::int32_t solverBody(std::size_t denseIndex, const BodyStorage& bodies);
+    void loadVelocities(const BodyStorage& bodies);
+    void loadMotion(const BodyStorage& bodies);
+    void storeVelocities(BodyStorage& bodies) const;
+
+    std::vector<ManifoldBatch> batches_;       // colour by colour
+    std::vector<BodyRow> velocities_, motion_;  // by solver body
+    std::vector<BodyReference> references_;    // by solver body; entry 0 is the immovable body
+    std::vector<std::int32_t> denseToSolver_;  // scratch: -1 where a body has no solver entry
+    std::vector<std::uint64_t> bodyColors_;    // scratch: colours used at each solver body
+    std::vector<std::uint32_t> order_;         // scratch: constraints sorted by colour
+    std::vector<std::uint8_t> colorOf_;        // scratch
     Params params_;
     float biasRate_ = 0.0f, massScale_ = 1.0f, impulseScale_ = 0.0f;  // soft-contact coefficients
     float maxPenetration_ = 0.0f;
+    std::size_t constraintCount_ = 0, colorCount_ = 0;
     bool usesFriction_ = false;
     bool usesRestitution_ = false;
 };
