@@ -77,7 +77,10 @@ bool DynamicAabbTree::moveProxy(ProxyId id, const Aabb& tight, const Vec3& displ
     assert(!tight.isEmpty() && isFinite(tight.min) && isFinite(tight.max));
     const Aabb fresh = enlarge(tight, displacement);
     const Aabb& current = nodes_[id].box;
-    if (current.contains(tight) && current.surfaceArea() <= settings_.shrinkAreaRatio * fresh.surfaceArea()) {
+    // The fat box must hold where the body is going too, or a body fast enough to cross another
+    // in one step would never be paired with it.
+    const Aabb swept{glm::min(tight.min, tight.min + displacement), glm::max(tight.max, tight.max + displacement)};
+    if (current.contains(swept) && current.surfaceArea() <= settings_.shrinkAreaRatio * fresh.surfaceArea()) {
         return false;
     }
     removeLeaf(id);

@@ -125,8 +125,8 @@ public:
     // `tight` must be finite and non-empty. `userData` is returned with query hits and pairs.
     ProxyId createProxy(const Aabb& tight, std::uint32_t userData, const Vec3& displacement = Vec3(0.0f));
     void destroyProxy(ProxyId id);
-    // Reinserts (and returns true) only when `tight` leaves the fat box, or when the fat box has
-    // become much larger than a fresh one (a fast body that slowed down).
+    // Reinserts (and returns true) only when `tight`, swept by `displacement`, leaves the fat box,
+    // or when the fat box has become much larger than a fresh one (a fast body that slowed down).
     bool moveProxy(ProxyId id, const Aabb& tight, const Vec3& displacement);
 
     const Aabb& fatBounds(ProxyId id) const { return nodes_[id].box; }

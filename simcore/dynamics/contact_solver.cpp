@@ -54,6 +54,10 @@ float relativeVelocity(const BodyStorage& bodies, std::size_t a, std::size_t b, 
     return glm::dot(vb - va, axis);
 }
 
+float roundingRadius(const Shape& shape) {
+    return shape.type == ShapeType::Sphere || shape.type == ShapeType::Capsule ? shape.radius : 0.0f;
+}
+
 void setLanes(FloatW (&wide)[3], int lane, const Vec3& v) {
     wide[0].setLane(lane, v.x);
     wide[1].setLane(lane, v.y);
@@ -273,6 +277,8 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const BodyStor
         // With friction off (or zero for this pair) the friction rows have zero mass: no effect.
         const float friction = params.friction ? contact.friction : 0.0f;
         const float restitution = params.restitution ? contact.restitution : 0.0f;
+        batch.radiusA.setLane(lane, roundingRadius(bodies.shape[a]));
+        batch.radiusB.setLane(lane, roundingRadius(bodies.shape[b]));
         batch.friction.setLane(lane, friction);
         batch.restitution.setLane(lane, restitution);
         batch.anyFriction = batch.anyFriction || friction > 0.0f;
@@ -416,7 +422,12 @@ void ContactSolver::solve(BodyStorage& bodies, bool useBias) {
         for (int i = 0; i < c.maxPointCount; ++i) {
             PointBatch& p = c.points[i];
             const Vec3W anchorA = load(p.anchorA), anchorB = load(p.anchorB);
-            const Vec3W d = shift + turnB * anchorB - turnA * anchorA;
+            // The anchors sit mid-gap; each body's surface is half the gap away along the normal
+            // and its core a rounding radius further.
+            const FloatW halfGap = FloatW::splat(0.5f) * p.baseSeparation;
+            const Vec3W coreA = mulAdd(normal, -(halfGap + c.radiusA), anchorA);
+            const Vec3W coreB = mulAdd(normal, halfGap + c.radiusB, anchorB);
+            const Vec3W d = shift + turnB * coreB - turnA * coreA;
             const FloatW separation = p.baseSeparation + dot(d, normal);
 
             const MaskW speculative = separation > zero;

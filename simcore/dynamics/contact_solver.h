@@ -68,6 +68,10 @@ private:
         FloatW inverseInertiaA[6], inverseInertiaB[6];  // world, at prepare: xx yy zz xy xz yz
         FloatW normal[3], tangent1[3], tangent2[3];     // normal from A to B
         FloatW friction, restitution;
+        // Sphere and capsule radii (0 for other shapes). Rolling turns a round body's surface point
+        // away from the contact without changing the gap, so the separation follows the anchors'
+        // projections on the core (centre or segment) instead.
+        FloatW radiusA, radiusB;
         PointBatch points[kMaxManifoldPoints];
         std::uint32_t contactIndex[kLanes];
         std::uint8_t pointCount[kLanes];

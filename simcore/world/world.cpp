@@ -1,6 +1,7 @@
 #include "simcore/world/world.h"
 
 #include "simcore/collision/ray_cast.h"
+#include "simcore/collision/time_of_impact.h"
 #include "simcore/dynamics/integrator.h"
 
 #include <cmath>
@@ -139,9 +140,11 @@ bool World::needs(Effect effect, const Activity& activity) const {
         // Friction and restitution are decided per constraint by the contact solver.
         case Effect::Friction:
         case Effect::Restitution:
-        // Joints and continuous collision are not part of the engine yet: nothing can need them.
+        // Continuous collision guards contacts against fast bodies; sweepFastBodies decides per
+        // step whether any body is fast enough to need it.
+        case Effect::Ccd: return needs(Effect::Contacts, activity);
+        // Joints are not part of the engine yet: nothing can need them.
         case Effect::Joints:
-        case Effect::Ccd:
         case Effect::Count: return false;
     }
     return false;
@@ -158,7 +161,8 @@ bool World::needs(Effect effect, const Activity& activity) const {
 //     7. integrate positions: centres of mass and orientations from the new velocities
 //     8. relax iterations: the same constraints without the push, so it does not become bounce
 //   9. restitution, and impulses stored for the next step's warm start
-//  10. sleep: islands that stayed slow long enough stop being simulated
+//  10. continuous collision: a fast body that would pass through another stops at the time of impact
+//  11. sleep: islands that stayed slow long enough stop being simulated
 // Stages 1-4, 6 and 8-9 run only when contacts are needed; see needs() for every effect.
 void World::step() {
     const auto stepStart = std::chrono::steady_clock::now();
@@ -172,6 +176,7 @@ void World::step() {
     const bool gyroscopic = needs(Effect::Gyroscopic, activity);
     const bool contacts = needs(Effect::Contacts, activity);
     const bool sleeping = needs(Effect::Sleeping, activity);
+    const bool continuous = needs(Effect::Ccd, activity);
 
     const float h = settings_.timeStep / static_cast<float>(settings_.substeps);
     VelocityIntegration velocityParams;
@@ -206,6 +211,7 @@ void World::step() {
         params.contact = settings_.contact;
         contactSolver_.prepare(contactManager_.contacts(), bodies_, params);
     }
+    if (continuous) recordSweepStarts();
     const bool solveContacts = contacts && contactSolver_.constraintCount() > 0;
     const bool relax = solveContacts && settings_.solver.positionCorrection == PositionCorrection::SoftStep;
 
@@ -232,6 +238,10 @@ void World::step() {
         ScopedStageTimer timer(slot(Stage::SolveConstraints));
         if (contactSolver_.usesRestitution()) contactSolver_.applyRestitution(bodies_);
         contactSolver_.storeImpulses(contactManager_.contacts());
+    }
+    if (continuous) {
+        ScopedStageTimer timer(slot(Stage::ContinuousCollision));
+        if (sweepFastBodies()) countEffect(Effect::Ccd);
     }
     if (sleeping) {
         ScopedStageTimer timer(slot(Stage::Sleep));
@@ -284,6 +294,55 @@ void World::updateBroadPhase(float dt) {
 
 void World::updateContacts() {
     contactManager_.updateManifolds(bodies_, broadPhase_, settings_.contact.speculativeDistance, settings_.timeStep);
+}
+
+void World::recordSweepStarts() {
+    sweepStartCenter_.resize(bodies_.size());
+    sweepStartRotation_.resize(bodies_.size());
+    for (std::size_t i = 0; i < bodies_.size(); ++i) {
+        sweepStartCenter_[i] = bodies_.centerOfMass[i];
+        sweepStartRotation_[i] = bodies_.orientation[i];
+    }
+}
+
+// Speculative contacts stop most fast bodies at the surface they approach; this catches the rest
+// (a body that meets something its start-of-step contacts did not see). A body is swept when it is
+// flagged `ccd` or moved more than half its thinnest dimension. It is swept against every other
+// body at that body's end pose, and put back to the first time of impact, keeping its velocity:
+// the next step's contacts take it from there. Returns whether any body was fast.
+bool World::sweepFastBodies() {
+    constexpr float kFastFraction = 0.5f;
+    const float target = settings_.contact.linearSlop;
+    bool anyFast = false;
+    for (std::size_t i = 0; i < bodies_.size(); ++i) {
+        if (bodies_.motion[i] != MotionType::Dynamic || !bodies_.awake[i]) continue;
+        const Sweep sweep{bodies_.localCenterOfMass[i], sweepStartCenter_[i], bodies_.centerOfMass[i],
+                          sweepStartRotation_[i], bodies_.orientation[i]};
+        const Shape& shape = bodies_.shape[i];
+        const float travel = glm::length(sweep.center1 - sweep.center0) +
+                             sweep.rotationAngle() * glm::length(bodies_.bounds[i].halfExtents());
+        if (!bodies_.ccd[i] && travel <= kFastFraction * minimumExtent(shape)) continue;
+        anyFast = true;
+
+        Aabb swept = worldBounds(shape, sweep.at(0.0f));
+        swept.grow(worldBounds(shape, sweep.at(1.0f)));
+        float first = 1.0f;
+        broadPhase_.tree().query(swept, [&](ProxyId proxy) {
+            const std::size_t j = bodies_.denseIndexOfSlot(broadPhase_.userData(proxy));
+            if (j == i) return;
+            const Sweep resting{bodies_.localCenterOfMass[j], bodies_.centerOfMass[j], bodies_.centerOfMass[j],
+                                bodies_.orientation[j], bodies_.orientation[j]};
+            const TimeOfImpact toi = timeOfImpact(shape, sweep, bodies_.shape[j], resting, target, 0.25f * target);
+            if (toi.outcome == TimeOfImpact::Outcome::Hit) first = std::min(first, toi.fraction);
+        });
+        if (first < 1.0f) {
+            const Transform pose = sweep.at(first);
+            bodies_.orientation[i] = pose.rotation;
+            bodies_.centerOfMass[i] = pose.position + pose.rotation * bodies_.localCenterOfMass[i];
+            bodies_.refreshInverseInertiaWorld(i);
+        }
+    }
+    return anyFast;
 }
 
 void World::setAwake(std::size_t i, bool awake) {

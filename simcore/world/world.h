@@ -108,6 +108,8 @@ private:
     bool needs(Effect effect, const Activity& activity) const;
     void updateBroadPhase(float dt);
     void updateContacts();
+    void recordSweepStarts();
+    bool sweepFastBodies();
     void setAwake(std::size_t i, bool awake);
     void countEffect(Effect effect) { ++effectUsage_.stepsRun[static_cast<int>(effect)]; }
     std::size_t indexOf(BodyId id) const;  // dense index; throws std::out_of_range for a stale id
@@ -120,6 +122,8 @@ private:
     ContactSolver contactSolver_;
     Islands islands_;
     std::vector<BodyPair> newPairs_;  // scratch, reused every step
+    std::vector<Vec3> sweepStartCenter_;     // scratch: awake bodies' poses at the start of the step,
+    std::vector<Quat> sweepStartRotation_;   // for continuous collision
     bool proxiesStale_ = false;       // bodies moved while the broad phase did not run
     StepProfile lastProfile_;
     EffectUsage effectUsage_;
