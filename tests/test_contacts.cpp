@@ -11,6 +11,7 @@
 #include "simcore/world/world.h"
 
 #include "support/allocation_counter.h"
+#include "support/worlds.h"
 
 #include <QtTest>
 
@@ -20,76 +21,12 @@
 #include <vector>
 
 using namespace simcore;
+using namespace test_support;
 
 namespace {
 
 constexpr float kG = 9.81f;
-constexpr float kTheta = kPi / 6.0f;  // 30 degrees
-
-WorldSettings awakeSettings() {
-    WorldSettings s;
-    s.sleep.enabled = false;
-    return s;
-}
-
-int stepsFor(const World& world, float seconds) {
-    return static_cast<int>(std::lround(seconds / world.settings().timeStep));
-}
-
-void run(World& world, float seconds) {
-    for (int i = 0, n = stepsFor(world, seconds); i < n; ++i) world.step();
-}
-
-// Static ground: top face at y = 0.
-BodyId addGround(World& world, float friction = 0.6f, float restitution = 0.0f, float halfSize = 50.0f) {
-    BodyCreationSettings g;
-    g.name = "ground";
-    g.motion = MotionType::Static;
-    g.shape = Shape::box(Vec3(halfSize, 0.5f, halfSize));
-    g.position = Vec3(0.0f, -0.5f, 0.0f);
-    g.friction = friction;
-    g.restitution = restitution;
-    return world.createBody(g);
-}
-
-BodyCreationSettings cube(const Vec3& position, float mass = 1.0f, float halfSize = 0.5f, float friction = 0.6f) {
-    BodyCreationSettings b;
-    b.name = "cube";
-    b.shape = Shape::box(Vec3(halfSize));
-    b.position = position;
-    b.mass = mass;
-    b.friction = friction;
-    return b;
-}
-
-// A static 30 degree ramp (a thin box turned about z, rising towards +x) centred at the origin,
-// with a body resting on its top face 8 m up the slope, exactly touching.
-struct Incline {
-    Quat rotation = glm::angleAxis(kTheta, Vec3(0.0f, 0.0f, 1.0f));
-    Vec3 normal = rotation * Vec3(0.0f, 1.0f, 0.0f);     // (-sin, cos, 0)
-    Vec3 downSlope = rotation * Vec3(-1.0f, 0.0f, 0.0f);  // (-cos, -sin, 0)
-    BodyId body;
-
-    Incline(World& world, const Shape& shape, float offsetAlongNormal, float friction) {
-        BodyCreationSettings ramp;
-        ramp.name = "ramp";
-        ramp.motion = MotionType::Static;
-        ramp.shape = Shape::box(Vec3(12.0f, 0.1f, 2.0f));
-        ramp.orientation = rotation;
-        ramp.friction = friction;
-        world.createBody(ramp);
-
-        BodyCreationSettings b;
-        b.name = "slider";
-        b.shape = shape;
-        b.mass = 1.0f;
-        b.orientation = rotation;
-        b.position = normal * (0.1f + offsetAlongNormal) - downSlope * 8.0f;
-        b.friction = friction;  // both sides the same: the combined sqrt(mu mu) is mu
-        body = world.createBody(b);
-    }
-    float slopeSpeed(const World& world) const { return glm::dot(world.linearVelocity(body), downSlope); }
-};
+constexpr float kTheta = Incline::kTheta;
 
 // Acceleration along the slope from the velocity at t = 0.5 s and t = 1.5 s (past the first
 // contact transient; the velocity difference over 1 s is the mean acceleration).
@@ -99,9 +36,6 @@ float measureSlopeAcceleration(World& world, const Incline& incline) {
     run(world, 1.0f);
     return incline.slopeSpeed(world) - v0;
 }
-
-// Kinetic + potential energy of the dynamic bodies (potential relative to y = 0, the ground).
-double totalEnergy(const World& world) { return world.kineticEnergy() + world.potentialEnergy(); }
 
 QString vecString(const Vec3& v) { return QString("(%1, %2, %3)").arg(v.x).arg(v.y).arg(v.z); }
 
