@@ -1,6 +1,6 @@
 // The hard cases a rigid-body engine is judged by, each with a numeric bound: a tall tower that
-// must stand, heavy bodies on light ones, a box resting on an incline for a minute, a body created
-// deep inside another, and a long soak of a random mixed scene with pushes. Joint chains are in
+// must stand, heavy bodies on light ones, a box resting on an incline for a minute, a box tumbling
+// about its intermediate axis, a body created deep inside another, and a long soak of a random mixed scene with pushes. Joint chains are in
 // test_joints, fast bodies in test_ccd.
 
 #include "simcore/io/scene_io.h"
@@ -44,6 +44,31 @@ Drift runSceneFile(const char* file, float seconds) {
     return drift;
 }
 
+// Times at which the body-frame y component of w changes sign (the box flips), for w0 in body
+// axes, by RK4 on Euler's equations with a step 400 times finer than the world's: the reference.
+std::vector<double> referenceFlipTimes(const Vec3& inertia, const Vec3& w0, double seconds) {
+    using V = glm::dvec3;
+    const V I(inertia);
+    auto rate = [&I](const V& w) { return V((I.y - I.z) * w.y * w.z / I.x, (I.z - I.x) * w.z * w.x / I.y,
+                                            (I.x - I.y) * w.x * w.y / I.z); };
+    const double h = 1.0 / 24000.0;
+    V w(w0);
+    std::vector<double> flips;
+    for (double t = 0.0; t < seconds; t += h) {
+        const V k1 = rate(w), k2 = rate(w + 0.5 * h * k1), k3 = rate(w + 0.5 * h * k2), k4 = rate(w + h * k3);
+        const V next = w + h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+        if ((next.y < 0.0) != (w.y < 0.0)) flips.push_back(t + h);
+        w = next;
+    }
+    return flips;
+}
+
+QString joined(const std::vector<double>& times) {
+    QStringList parts;
+    for (double t : times) parts << QString::number(t, 'f', 3);
+    return parts.join(", ");
+}
+
 }  // namespace
 
 class TestHardCases : public QObject {
@@ -54,6 +79,7 @@ private slots:
     void heavyOnLightStacks_data();
     void heavyOnLightStacks();
     void boxRestsOnInclineForAMinute();
+    void intermediateAxisFlipsWithBoundedMomentum();
     void deepOverlapIsPushedOutAtBoundedSpeed();
     void randomMixedSceneSoak();
 };
@@ -120,6 +146,49 @@ void TestHardCases::boxRestsOnInclineForAMinute() {
     const float creep = glm::length(world.position(incline.body) - settled);
     qInfo("incline, 60 s: creep %.6f m", creep);
     QVERIFY2(creep < 1e-3f, qPrintable(QString("box crept %1 m").arg(creep)));
+}
+
+// Dzhanibekov: a box (inertia I1 < I2 < I3) spun about its intermediate axis with a 1 % nudge
+// flips over and back. Torque-free, so |L| and the kinetic energy are invariants: over 10 s each
+// must hold within 1 %, and the flips must come when the reference solution says, within 5 % of
+// the first flip's time.
+void TestHardCases::intermediateAxisFlipsWithBoundedMomentum() {
+    WorldSettings settings = awakeSettings();
+    settings.gravity = Vec3(0.0f);
+    World world(settings);
+    BodyCreationSettings b;
+    b.shape = Shape::box(Vec3(0.6f, 0.3f, 0.1f));  // intermediate axis: y
+    b.mass = 1.0f;
+    b.angularVelocity = Vec3(0.05f, 5.0f, 0.0f);
+    const BodyId box = world.createBody(b);
+    const Mat3 inertia = world.bodies().inertiaLocal[0];
+    const std::vector<double> expected =
+        referenceFlipTimes(Vec3(inertia[0][0], inertia[1][1], inertia[2][2]), b.angularVelocity, 10.0);
+    QVERIFY(expected.size() >= 3);
+
+    const float l0 = glm::length(world.angularMomentum());
+    const double e0 = world.kineticEnergy();
+    float worstL = 0.0f;
+    double worstE = 0.0;
+    std::vector<double> flips;
+    float previous = b.angularVelocity.y;
+    for (int i = 0, n = stepsFor(world, 10.0f); i < n; ++i) {
+        world.step();
+        worstL = std::max(worstL, std::abs(glm::length(world.angularMomentum()) - l0) / l0);
+        worstE = std::max(worstE, std::abs(world.kineticEnergy() - e0) / e0);
+        const float spinY = (glm::conjugate(world.orientation(box)) * world.angularVelocity(box)).y;
+        if ((spinY < 0.0f) != (previous < 0.0f)) flips.push_back(world.simulatedTime());
+        previous = spinY;
+    }
+    qInfo("tumbler: flips at %s s (reference %s s); |L| off by %.4f %%, energy by %.4f %%", qPrintable(joined(flips)),
+          qPrintable(joined(expected)), 100.0 * worstL, 100.0 * worstE);
+    QVERIFY2(worstL < 0.01f, qPrintable(QString("|L| off by %1").arg(worstL)));
+    QVERIFY2(worstE < 0.01, qPrintable(QString("energy off by %1").arg(worstE)));
+    QCOMPARE(flips.size(), expected.size());
+    const double tolerance = 0.05 * expected.front();
+    for (std::size_t k = 0; k < flips.size(); ++k)
+        QVERIFY2(std::abs(flips[k] - expected[k]) <= tolerance,
+                 qPrintable(QString("flip %1 at %2 s, reference %3 s").arg(k).arg(flips[k]).arg(expected[k])));
 }
 
 // A cube created 40 cm deep in the ground rises out at no more than the push limit, without

@@ -9,15 +9,24 @@ Mat3 skew(const Vec3& v) {
     return Mat3(0.0f, v.z, -v.y, -v.z, 0.0f, v.x, v.y, -v.x, 0.0f);
 }
 
-// Torque-free Euler equations I dw/dt + w x (I w) = 0, integrated implicitly in body axes with one
-// Newton step (Catto, "Numerical Methods", GDC 2015). The explicit form pumps energy into a tumbling
-// body; the implicit one damps slightly instead, so rotation stays bounded however long it runs.
+// Torque-free Euler equations I dw/dt + w x (I w) = 0 in body axes, by the implicit midpoint rule:
+// I (w1 - w0) + h wm x (I wm) = 0 with wm = (w0 + w1) / 2, solved by Newton's method from w1 = w0.
+// The midpoint rule conserves quadratic invariants, here both |I w| = |L| and the energy w.I w / 2,
+// and the position update turns the body about w itself, which leaves w in body axes unchanged; so
+// a tumbling body neither gains nor loses energy or momentum (the explicit form pumps energy in,
+// backward Euler bleeds a few percent of |L| over seconds). Two Newton steps reach float precision
+// at any spin a step can resolve.
 Vec3 solveGyroscopic(const Quat& orientation, const Mat3& inertia, const Vec3& worldOmega, float dt) {
-    const Vec3 w = glm::conjugate(orientation) * worldOmega;
-    const Vec3 iw = inertia * w;
-    const Vec3 residual = dt * glm::cross(w, iw);
-    const Mat3 jacobian = inertia + dt * (skew(w) * inertia - skew(iw));
-    return orientation * (w - glm::inverse(jacobian) * residual);
+    const Vec3 w0 = glm::conjugate(orientation) * worldOmega;
+    Vec3 w1 = w0;
+    for (int iteration = 0; iteration < 2; ++iteration) {
+        const Vec3 wm = 0.5f * (w0 + w1);
+        const Vec3 iwm = inertia * wm;
+        const Vec3 residual = inertia * (w1 - w0) + dt * glm::cross(wm, iwm);
+        const Mat3 jacobian = inertia + (0.5f * dt) * (skew(wm) * inertia - skew(iwm));
+        w1 -= glm::inverse(jacobian) * residual;
+    }
+    return orientation * w1;
 }
 
 }  // namespace
