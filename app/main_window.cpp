@@ -1,150 +1,793 @@
 #include "app/main_window.h"
 
+#include "app/document/body_templates.h"
 #include "app/document/scene_document.h"
+#include "app/document/scene_tree_model.h"
+#include "app/document/undo_commands.h"
+#include "app/panels/inspector_panel.h"
+#include "app/panels/profiler_panel.h"
+#include "app/panels/simulation_settings_model.h"
+#include "app/panels/simulation_settings_panel.h"
 #include "app/simulation/simulation_controller.h"
+#include "app/viewport/debug_draw_options.h"
 #include "app/viewport/viewport.h"
 
+#include "simcore/io/scene_io.h"
 #include "simcore/world/world.h"
 
 #include <QAction>
+#include <QActionGroup>
 #include <QApplication>
+#include <QCloseEvent>
+#include <QCoreApplication>
+#include <QDateTime>
+#include <QDir>
+#include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QFileSystemWatcher>
+#include <QHeaderView>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QMimeData>
+#include <QRegularExpression>
+#include <QSaveFile>
+#include <QSettings>
+#include <QStandardPaths>
 #include <QStatusBar>
 #include <QStyle>
+#include <QTimer>
 #include <QToolBar>
+#include <QToolButton>
+#include <QTreeView>
+#include <QUndoStack>
+#include <QUndoView>
+
 
 namespace interplay {
+namespace {
+
+constexpr int kDefaultAutosaveMs = 60'000;
+constexpr float kThrowSpeed = 14.0f;  // m/s along the view
+const QString kRecentFilesKey = QStringLiteral("recentFiles");
+const QString kGeometryKey = QStringLiteral("mainWindow/geometry");
+const QString kStateKey = QStringLiteral("mainWindow/state");
+const QString kSceneFilter = QStringLiteral("Scenes (*.json);;All files (*)");
+
+// Size and modification time: what tells our own write apart from another program's.
+QString fileStamp(const QString& path) {
+    const QFileInfo info(path);
+    if (!info.exists()) return {};
+    return QStringLiteral("%1@%2").arg(info.size()).arg(info.lastModified().toMSecsSinceEpoch());
+}
+
+QString recoveryMetaPath() {
+    return MainWindow::recoveryFilePath() + QStringLiteral(".origin");
+}
+
+MainWindow::Prompts dialogPrompts(QWidget* parent) {
+    MainWindow::Prompts prompts;
+    prompts.unsavedChanges = [parent](const QString& name) {
+        const auto answer = QMessageBox::warning(
+            parent, QCoreApplication::applicationName(), MainWindow::tr("Save changes to \"%1\"?").arg(name),
+            QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+        if (answer == QMessageBox::Save) return MainWindow::UnsavedChoice::Save;
+        if (answer == QMessageBox::Discard) return MainWindow::UnsavedChoice::Discard;
+        return MainWindow::UnsavedChoice::Cancel;
+    };
+    prompts.confirm = [parent](const QString& title, const QString& question) {
+        return QMessageBox::question(parent, title, question, QMessageBox::Yes | QMessageBox::No, QMessageBox::Yes) ==
+               QMessageBox::Yes;
+    };
+    prompts.error = [parent](const QString& title, const QString& text, const QString& details) {
+        // Headline in the text, the diagnostics (file, JSON path, reason) below it.
+        QMessageBox box(QMessageBox::Warning, title, text, QMessageBox::Ok, parent);
+        box.setInformativeText(details);
+        box.exec();
+    };
+    prompts.chooseFile = [parent](MainWindow::FileChoice choice, const QString& title, const QString& directory) {
+        return choice == MainWindow::FileChoice::Open
+                   ? QFileDialog::getOpenFileName(parent, title, directory, kSceneFilter)
+                   : QFileDialog::getSaveFileName(parent, title, directory, kSceneFilter);
+    };
+    return prompts;
+}
+
+}  // namespace
 
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent),
       m_document(new SceneDocument(this)),
       m_simulation(new SimulationController(this)),
-      m_viewport(new Viewport(this)) {
+      m_viewport(new Viewport(this)),
+      m_debugDraw(new DebugDrawOptions(this)),
+      m_settingsModel(new SimulationSettingsModel(m_document, this)),
+      m_sceneTreeModel(new SceneTreeModel(m_document, this)),
+      m_prompts(dialogPrompts(this)),
+      m_autosaveTimer(new QTimer(this)),
+      m_watcher(new QFileSystemWatcher(this)) {
     setCentralWidget(m_viewport);
     m_viewport->setSimulation(m_simulation);
+    m_viewport->setDocument(m_document);
+    m_viewport->setDebugDrawOptions(m_debugDraw);
+    setAcceptDrops(true);
+    setDockOptions(AnimatedDocks | AllowTabbedDocks | AllowNestedDocks);
 
     createActions();
-    createMenusAndToolBar();
+    createDocks();
+    createMenusAndToolBars();
     createStatusBar();
 
     connect(m_document, &SceneDocument::sceneReplaced, this, &MainWindow::documentSceneReplaced);
     connect(m_document, &SceneDocument::modifiedChanged, this, &MainWindow::updateTitle);
     connect(m_document, &SceneDocument::filePathChanged, this, &MainWindow::updateTitle);
+    connect(m_document, &SceneDocument::filePathChanged, this, &MainWindow::watchDocumentFile);
+    connect(m_document, &SceneDocument::saved, this, &MainWindow::watchDocumentFile);
+    for (auto signal : {&SceneDocument::bodyInserted, &SceneDocument::bodyRemoved}) {
+        connect(m_document, signal, this, [this] { m_bodiesEdited = true; });
+    }
+    connect(m_document, &SceneDocument::bodyMoved, this, [this] { m_bodiesEdited = true; });
+    connect(m_document, &SceneDocument::bodyChanged, this, [this] { m_bodiesEdited = true; });
+    connect(m_document, &SceneDocument::jointInserted, this, [this] { m_bodiesEdited = true; });
+    connect(m_document, &SceneDocument::jointRemoved, this, [this] { m_bodiesEdited = true; });
+    connect(m_document, &SceneDocument::settingsChanged, this, [this] { m_settingsEdited = true; });
+    // Every edit ends in a history change (push, undo, redo, merge), once per edit even when it
+    // touches many bodies: the moment to bring the simulation up to date.
+    connect(m_document->undoStack(), &QUndoStack::indexChanged, this, &MainWindow::syncSimulation);
+    connect(m_document, &SceneDocument::selectionChanged, this, &MainWindow::syncTreeSelection);
+    connect(m_settingsModel, &SimulationSettingsModel::rejected, this,
+            [this](const QString& message) { statusBar()->showMessage(message, 8000); });
+    connect(m_inspector, &InspectorPanel::rejected, this,
+            [this](const QString& message) { statusBar()->showMessage(message, 8000); });
+
     connect(m_simulation, &SimulationController::stepped, this, &MainWindow::updateStatus);
     connect(m_simulation, &SimulationController::worldRebuilt, this, &MainWindow::updateStatus);
     connect(m_simulation, &SimulationController::simulationError, this, &MainWindow::showSimulationError);
+    connect(m_watcher, &QFileSystemWatcher::fileChanged, this, &MainWindow::documentFileChanged);
 
-    resize(1280, 800);
+    connect(m_autosaveTimer, &QTimer::timeout, this, &MainWindow::autosaveNow);
+    m_autosaveTimer->start(kDefaultAutosaveMs);
+
+    resize(1440, 900);
+    restoreLayout();
     updateTitle();
     updateStatus();
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow() {
+    // The QML panel goes first: its bindings read the settings model and the controller, which
+    // are children of this window and would otherwise be destroyed under it.
+    delete m_settingsPanel;
+}
+
+// ---- Actions, menus, docks ----------------------------------------------------------------------
+
+QAction* MainWindow::makeAction(const QString& objectName, const QString& text, const QKeySequence& shortcut,
+                                const QString& statusTip) {
+    auto* action = new QAction(text, this);
+    action->setObjectName(objectName);
+    action->setShortcut(shortcut);
+    action->setStatusTip(statusTip);
+    return action;
+}
+
+QAction* MainWindow::action(const QString& objectName) const {
+    return findChild<QAction*>(objectName);
+}
 
 void MainWindow::createActions() {
-    m_openAction = new QAction(QIcon::fromTheme(QStringLiteral("document-open")), tr("&Open…"), this);
-    m_openAction->setShortcut(QKeySequence::Open);
-    m_openAction->setStatusTip(tr("Open a scene file (Interplay or thesis format)"));
-    connect(m_openAction, &QAction::triggered, this, &MainWindow::openWithDialog);
+    QStyle* s = style();
+    // File.
+    QAction* a = makeAction(QStringLiteral("new"), tr("&New"), QKeySequence::New, tr("Start an empty scene"));
+    a->setIcon(QIcon::fromTheme(QStringLiteral("document-new"), s->standardIcon(QStyle::SP_FileIcon)));
+    connect(a, &QAction::triggered, this, &MainWindow::newScene);
+    a = makeAction(QStringLiteral("open"), tr("&Open…"), QKeySequence::Open, tr("Open a scene file (Interplay or thesis format)"));
+    a->setIcon(QIcon::fromTheme(QStringLiteral("document-open"), s->standardIcon(QStyle::SP_DialogOpenButton)));
+    connect(a, &QAction::triggered, this, [this] {
+        const QString dir = m_document->filePath().isEmpty() ? examplesDirectory() : QFileInfo(m_document->filePath()).absolutePath();
+        const QString path = m_prompts.chooseFile(FileChoice::Open, tr("Open Scene"), dir);
+        if (!path.isEmpty()) open(path);
+    });
+    a = makeAction(QStringLiteral("import"), tr("&Import Thesis Scene…"), {},
+                   tr("Open a scene of the 2018 thesis app; it is saved as a new Interplay scene"));
+    connect(a, &QAction::triggered, this, &MainWindow::importThesisScene);
+    a = makeAction(QStringLiteral("save"), tr("&Save"), QKeySequence::Save, tr("Save the scene"));
+    a->setIcon(QIcon::fromTheme(QStringLiteral("document-save"), s->standardIcon(QStyle::SP_DialogSaveButton)));
+    connect(a, &QAction::triggered, this, &MainWindow::save);
+    a = makeAction(QStringLiteral("saveAs"), tr("Save &As…"), QKeySequence::SaveAs, tr("Save the scene to a new file"));
+    connect(a, &QAction::triggered, this, &MainWindow::saveAs);
+    a = makeAction(QStringLiteral("revert"), tr("Re&vert"), {}, tr("Drop unsaved changes and reload the file"));
+    connect(a, &QAction::triggered, this, &MainWindow::revert);
+    a = makeAction(QStringLiteral("quit"), tr("&Quit"), QKeySequence::Quit, tr("Quit Interplay"));
+    a->setMenuRole(QAction::QuitRole);
+    connect(a, &QAction::triggered, this, &QWidget::close);
 
-    m_quitAction = new QAction(QIcon::fromTheme(QStringLiteral("application-exit")), tr("&Quit"), this);
-    m_quitAction->setShortcut(QKeySequence::Quit);
-    m_quitAction->setMenuRole(QAction::QuitRole);
-    connect(m_quitAction, &QAction::triggered, this, &QWidget::close);
+    // Edit.
+    QAction* undo = m_document->undoStack()->createUndoAction(this, tr("&Undo"));
+    undo->setObjectName(QStringLiteral("undo"));
+    undo->setShortcut(QKeySequence::Undo);
+    undo->setIcon(QIcon::fromTheme(QStringLiteral("edit-undo"), s->standardIcon(QStyle::SP_ArrowBack)));
+    QAction* redo = m_document->undoStack()->createRedoAction(this, tr("&Redo"));
+    redo->setObjectName(QStringLiteral("redo"));
+    redo->setShortcut(QKeySequence::Redo);
+    redo->setIcon(QIcon::fromTheme(QStringLiteral("edit-redo"), s->standardIcon(QStyle::SP_ArrowForward)));
+    a = makeAction(QStringLiteral("delete"), tr("&Delete"), QKeySequence::Delete, tr("Delete the selected bodies"));
+    a->setIcon(QIcon::fromTheme(QStringLiteral("edit-delete"), s->standardIcon(QStyle::SP_TrashIcon)));
+    connect(a, &QAction::triggered, this, &MainWindow::deleteSelection);
+    a = makeAction(QStringLiteral("duplicate"), tr("D&uplicate"), Qt::CTRL | Qt::Key_D, tr("Copy the selected bodies beside them"));
+    connect(a, &QAction::triggered, this, &MainWindow::duplicateSelection);
+    a = makeAction(QStringLiteral("selectAll"), tr("Select &All"), QKeySequence::SelectAll, tr("Select every body"));
+    connect(a, &QAction::triggered, this, [this] {
+        QList<int> all;
+        for (int i = 0; i < m_document->bodyCount(); ++i) all << i;
+        m_document->setSelectedBodies(all);
+    });
+    a = makeAction(QStringLiteral("applyPose"), tr("Apply Simulated &Pose"), {},
+                   tr("Make the bodies' current simulated positions, orientations and velocities the authored scene"));
+    connect(a, &QAction::triggered, this, &MainWindow::applySimulatedPose);
 
-    m_playAction = new QAction(style()->standardIcon(QStyle::SP_MediaPlay), tr("&Play"), this);
+    // Add.
+    static const char* const kAddNames[] = {"addSphere", "addBox", "addCapsule", "addCylinder", "addHull"};
+    for (int type = 0; type < simcore::kShapeTypeCount; ++type) {
+        const auto shape = static_cast<simcore::ShapeType>(type);
+        a = makeAction(QLatin1String(kAddNames[type]), tr("Add %1").arg(shapeDisplayName(shape)), {},
+                       tr("Add a %1 above the point the camera looks at").arg(shapeDisplayName(shape).toLower()));
+        connect(a, &QAction::triggered, this, [this, type] { addBody(type); });
+    }
+
+    // View.
+    a = makeAction(QStringLiteral("frameSelection"), tr("&Frame Selection"), Qt::Key_F,
+                   tr("Aim the camera at the selected bodies (F)"));
+    connect(a, &QAction::triggered, m_viewport, &Viewport::frameSelection);
+
+    // Simulation.
+    m_playAction = makeAction(QStringLiteral("play"), tr("&Play"), Qt::Key_Space, tr("Run or pause the simulation (Space)"));
+    m_playAction->setIcon(s->standardIcon(QStyle::SP_MediaPlay));
     m_playAction->setCheckable(true);
-    m_playAction->setShortcut(Qt::Key_Space);
-    m_playAction->setStatusTip(tr("Run or pause the simulation (Space)"));
     connect(m_playAction, &QAction::toggled, m_simulation, &SimulationController::setPlaying);
     connect(m_simulation, &SimulationController::playingChanged, this, [this](bool playing) {
         m_playAction->setChecked(playing);
         m_playAction->setText(playing ? tr("&Pause") : tr("&Play"));
         m_playAction->setIcon(style()->standardIcon(playing ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
     });
-
-    m_stepAction = new QAction(style()->standardIcon(QStyle::SP_MediaSeekForward), tr("&Step"), this);
-    m_stepAction->setShortcut(Qt::Key_Period);
-    m_stepAction->setStatusTip(tr("Advance one time step and pause (.)"));
-    connect(m_stepAction, &QAction::triggered, m_simulation, &SimulationController::stepOnce);
-
-    m_resetAction = new QAction(style()->standardIcon(QStyle::SP_MediaSkipBackward), tr("&Reset"), this);
-    m_resetAction->setShortcut(Qt::CTRL | Qt::Key_R);
-    m_resetAction->setStatusTip(tr("Return to the authored scene (Ctrl+R)"));
-    connect(m_resetAction, &QAction::triggered, m_simulation, &SimulationController::reset);
+    a = makeAction(QStringLiteral("step"), tr("&Step"), Qt::Key_Period, tr("Advance one time step and pause (.)"));
+    a->setIcon(s->standardIcon(QStyle::SP_MediaSeekForward));
+    connect(a, &QAction::triggered, m_simulation, &SimulationController::stepOnce);
+    a = makeAction(QStringLiteral("reset"), tr("&Reset"), Qt::CTRL | Qt::Key_R, tr("Return to the authored scene (Ctrl+R)"));
+    a->setIcon(s->standardIcon(QStyle::SP_MediaSkipBackward));
+    connect(a, &QAction::triggered, m_simulation, &SimulationController::reset);
+    a = makeAction(QStringLiteral("throw"), tr("&Throw"), Qt::Key_T,
+                   tr("Throw a body from the camera along the view (T); it lives until Reset"));
+    connect(a, &QAction::triggered, this, &MainWindow::throwBody);
+    m_throwShapes = new QActionGroup(this);
+    for (int type = 0; type < simcore::kShapeTypeCount; ++type) {
+        QAction* choice = m_throwShapes->addAction(shapeDisplayName(static_cast<simcore::ShapeType>(type)));
+        choice->setCheckable(true);
+        choice->setData(type);
+        choice->setChecked(static_cast<simcore::ShapeType>(type) == simcore::ShapeType::Sphere);
+    }
 }
 
-void MainWindow::createMenusAndToolBar() {
-    QMenu* fileMenu = menuBar()->addMenu(tr("&File"));
-    fileMenu->addAction(m_openAction);
-    fileMenu->addSeparator();
-    fileMenu->addAction(m_quitAction);
+QDockWidget* MainWindow::addDock(const QString& objectName, const QString& title, QWidget* widget,
+                                 Qt::DockWidgetArea area) {
+    auto* dock = new QDockWidget(title, this);
+    dock->setObjectName(objectName);  // for saveState/restoreState
+    dock->setWidget(widget);
+    addDockWidget(area, dock);
+    return dock;
+}
 
-    QMenu* simulationMenu = menuBar()->addMenu(tr("&Simulation"));
-    simulationMenu->addAction(m_playAction);
-    simulationMenu->addAction(m_stepAction);
-    simulationMenu->addAction(m_resetAction);
+void MainWindow::createDocks() {
+    m_sceneTree = new QTreeView;
+    m_sceneTree->setObjectName(QStringLiteral("sceneTree"));
+    m_sceneTree->setModel(m_sceneTreeModel);
+    m_sceneTree->setSelectionMode(QAbstractItemView::ExtendedSelection);
+    m_sceneTree->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_sceneTree->setDragDropMode(QAbstractItemView::InternalMove);
+    m_sceneTree->setDefaultDropAction(Qt::MoveAction);
+    m_sceneTree->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed |
+                                 QAbstractItemView::SelectedClicked);
+    m_sceneTree->setUniformRowHeights(true);
+    m_sceneTree->header()->setSectionResizeMode(SceneTreeModel::NameColumn, QHeaderView::Stretch);
+    m_sceneTree->header()->setSectionResizeMode(SceneTreeModel::TypeColumn, QHeaderView::ResizeToContents);
+    m_sceneTree->header()->setSectionResizeMode(SceneTreeModel::DetailsColumn, QHeaderView::ResizeToContents);
+    m_sceneTree->header()->setStretchLastSection(false);
+    m_sceneTree->expandAll();
+    connect(m_sceneTreeModel, &QAbstractItemModel::modelReset, m_sceneTree, &QTreeView::expandAll);
+    connect(m_sceneTree->selectionModel(), &QItemSelectionModel::selectionChanged, this, [this] {
+        if (m_syncingSelection) return;
+        QList<int> selected;
+        for (const QModelIndex& index : m_sceneTree->selectionModel()->selectedRows()) {
+            const int body = m_sceneTreeModel->bodyIndexOf(index);
+            if (body >= 0) selected << body;
+        }
+        m_syncingSelection = true;
+        m_document->setSelectedBodies(selected);
+        m_syncingSelection = false;
+    });
 
-    QToolBar* toolBar = addToolBar(tr("Simulation"));
-    toolBar->setObjectName(QStringLiteral("simulationToolBar"));  // for saveState/restoreState
-    toolBar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
-    toolBar->addAction(m_playAction);
-    toolBar->addAction(m_stepAction);
-    toolBar->addAction(m_resetAction);
+    m_inspector = new InspectorPanel(m_document);
+    m_settingsPanel = new SimulationSettingsPanel(m_settingsModel, m_simulation, m_debugDraw);
+    m_profiler = new ProfilerPanel(m_simulation);
+    auto* history = new QUndoView(m_document->undoStack());
+    history->setObjectName(QStringLiteral("historyView"));
+    history->setEmptyLabel(tr("<opened>"));
+    history->setCleanIcon(QIcon::fromTheme(QStringLiteral("document-save"), style()->standardIcon(QStyle::SP_DialogSaveButton)));
+
+    QDockWidget* scene = addDock(QStringLiteral("sceneDock"), tr("Scene"), m_sceneTree, Qt::LeftDockWidgetArea);
+    QDockWidget* historyDock = addDock(QStringLiteral("historyDock"), tr("History"), history, Qt::LeftDockWidgetArea);
+    QDockWidget* inspector = addDock(QStringLiteral("inspectorDock"), tr("Inspector"), m_inspector, Qt::RightDockWidgetArea);
+    QDockWidget* settings = addDock(QStringLiteral("settingsDock"), tr("Simulation"), m_settingsPanel, Qt::RightDockWidgetArea);
+    QDockWidget* profiler = addDock(QStringLiteral("profilerDock"), tr("Profiler"), m_profiler, Qt::BottomDockWidgetArea);
+    tabifyDockWidget(inspector, settings);
+    inspector->raise();
+    splitDockWidget(scene, historyDock, Qt::Vertical);
+    for (QDockWidget* dock : {scene, historyDock, inspector, settings, profiler}) {
+        dock->toggleViewAction()->setObjectName(dock->objectName() + QStringLiteral("Toggle"));
+    }
+    arrangeDefaultLayout();
+}
+
+void MainWindow::arrangeDefaultLayout() {
+    auto* scene = findChild<QDockWidget*>(QStringLiteral("sceneDock"));
+    auto* history = findChild<QDockWidget*>(QStringLiteral("historyDock"));
+    auto* inspector = findChild<QDockWidget*>(QStringLiteral("inspectorDock"));
+    auto* profiler = findChild<QDockWidget*>(QStringLiteral("profilerDock"));
+    for (QDockWidget* dock : findChildren<QDockWidget*>()) dock->show();
+    resizeDocks({scene, inspector}, {300, 340}, Qt::Horizontal);
+    resizeDocks({scene, history}, {420, 220}, Qt::Vertical);
+    resizeDocks({profiler}, {200}, Qt::Vertical);
+}
+
+void MainWindow::createMenusAndToolBars() {
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    file->addAction(action(QStringLiteral("new")));
+    file->addAction(action(QStringLiteral("open")));
+    m_recentMenu = file->addMenu(tr("Open &Recent"));
+    m_recentMenu->setObjectName(QStringLiteral("recentMenu"));
+    connect(m_recentMenu, &QMenu::aboutToShow, this, &MainWindow::rebuildRecentMenu);
+    m_examplesMenu = file->addMenu(tr("E&xamples"));
+    m_examplesMenu->setObjectName(QStringLiteral("examplesMenu"));
+    rebuildExamplesMenu();
+    file->addAction(action(QStringLiteral("import")));
+    file->addSeparator();
+    file->addAction(action(QStringLiteral("save")));
+    file->addAction(action(QStringLiteral("saveAs")));
+    file->addAction(action(QStringLiteral("revert")));
+    file->addSeparator();
+    file->addAction(action(QStringLiteral("quit")));
+    rebuildRecentMenu();
+
+    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    edit->addAction(action(QStringLiteral("undo")));
+    edit->addAction(action(QStringLiteral("redo")));
+    edit->addSeparator();
+    edit->addAction(action(QStringLiteral("duplicate")));
+    edit->addAction(action(QStringLiteral("delete")));
+    edit->addAction(action(QStringLiteral("selectAll")));
+    edit->addSeparator();
+    edit->addAction(action(QStringLiteral("applyPose")));
+
+    QMenu* add = menuBar()->addMenu(tr("&Add"));
+    for (const char* name : {"addBox", "addSphere", "addCapsule", "addCylinder", "addHull"}) {
+        add->addAction(action(QLatin1String(name)));
+    }
+
+    QMenu* simulation = menuBar()->addMenu(tr("&Simulation"));
+    simulation->addAction(m_playAction);
+    simulation->addAction(action(QStringLiteral("step")));
+    simulation->addAction(action(QStringLiteral("reset")));
+    simulation->addSeparator();
+    simulation->addAction(action(QStringLiteral("throw")));
+    QMenu* throwShape = simulation->addMenu(tr("Throw &Shape"));
+    throwShape->addActions(m_throwShapes->actions());
+
+    m_viewMenu = menuBar()->addMenu(tr("&View"));
+    m_viewMenu->addAction(action(QStringLiteral("frameSelection")));
+    m_viewMenu->addSeparator();
+    for (QDockWidget* dock : findChildren<QDockWidget*>()) m_viewMenu->addAction(dock->toggleViewAction());
+
+    QToolBar* fileBar = addToolBar(tr("File"));
+    fileBar->setObjectName(QStringLiteral("fileToolBar"));
+    fileBar->addAction(action(QStringLiteral("new")));
+    fileBar->addAction(action(QStringLiteral("open")));
+    fileBar->addAction(action(QStringLiteral("save")));
+    fileBar->addSeparator();
+    fileBar->addAction(action(QStringLiteral("undo")));
+    fileBar->addAction(action(QStringLiteral("redo")));
+
+    QToolBar* simulationBar = addToolBar(tr("Simulation"));
+    simulationBar->setObjectName(QStringLiteral("simulationToolBar"));
+    simulationBar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    simulationBar->addAction(m_playAction);
+    simulationBar->addAction(action(QStringLiteral("step")));
+    simulationBar->addAction(action(QStringLiteral("reset")));
+    auto* throwButton = new QToolButton;
+    throwButton->setDefaultAction(action(QStringLiteral("throw")));
+    throwButton->setMenu(throwShape);
+    throwButton->setPopupMode(QToolButton::MenuButtonPopup);
+    simulationBar->addWidget(throwButton);
+
+    QToolBar* addBar = addToolBar(tr("Add"));
+    addBar->setObjectName(QStringLiteral("addToolBar"));
+    addBar->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    for (const char* name : {"addBox", "addSphere", "addCapsule", "addCylinder", "addHull"}) {
+        addBar->addAction(action(QLatin1String(name)));
+    }
+    addBar->addSeparator();
+    addBar->addAction(action(QStringLiteral("duplicate")));
+    addBar->addAction(action(QStringLiteral("delete")));
 }
 
 void MainWindow::createStatusBar() {
     m_timeLabel = new QLabel(this);
     m_costLabel = new QLabel(this);
     m_bodiesLabel = new QLabel(this);
+    m_fpsLabel = new QLabel(this);
     // Fixed digits keep the labels from jittering while running.
-    for (QLabel* label : {m_timeLabel, m_costLabel, m_bodiesLabel}) {
+    for (QLabel* label : {m_timeLabel, m_costLabel, m_bodiesLabel, m_fpsLabel}) {
         label->setFont(QFont(QStringLiteral("monospace")));
         label->setContentsMargins(8, 0, 8, 0);
         statusBar()->addPermanentWidget(label);
     }
+    // The frame rate is a property of the display, not of a step: sample it twice a second.
+    auto* fpsTimer = new QTimer(this);
+    connect(fpsTimer, &QTimer::timeout, this,
+            [this] { m_fpsLabel->setText(tr("%1 fps").arg(m_viewport->framesPerSecond(), 3)); });
+    fpsTimer->start(500);
 }
 
+// ---- Files ----------------------------------------------------------------------------------------
+
 bool MainWindow::openFile(const QString& path, QString* error) {
-    return m_document->load(path, error);
+    if (!m_document->load(path, error)) return false;
+    addRecentFile(path);
+    if (!m_document->loadWarnings().isEmpty()) {
+        statusBar()->showMessage(tr("Opened with %n warning(s): %1", nullptr, static_cast<int>(m_document->loadWarnings().size()))
+                                     .arg(m_document->loadWarnings().first()),
+                                 10000);
+    }
+    return true;
 }
 
 void MainWindow::openDefaultScene() {
     m_document->newDefault();
 }
 
-void MainWindow::openWithDialog() {
-    const QString startDir = m_document->filePath().isEmpty() ? QString() : QFileInfo(m_document->filePath()).absolutePath();
-    const QString path = QFileDialog::getOpenFileName(this, tr("Open Scene"), startDir,
-                                                      tr("Scenes (*.json);;All files (*)"));
-    if (path.isEmpty()) return;
+bool MainWindow::newScene() {
+    if (!maybeSave()) return false;
+    m_document->newEmpty();
+    return true;
+}
+
+bool MainWindow::open(const QString& path) {
+    if (!maybeSave()) return false;
     QString error;
     if (!openFile(path, &error)) {
-        // Headline in the text, the loader's diagnostics (file, JSON path, reason) below it.
-        QMessageBox box(QMessageBox::Warning, tr("Open Scene"),
-                        tr("The scene \"%1\" could not be opened.").arg(QFileInfo(path).fileName()), QMessageBox::Ok,
-                        this);
-        box.setInformativeText(error);
-        box.exec();
+        m_prompts.error(tr("Open Scene"), tr("The scene \"%1\" could not be opened.").arg(QFileInfo(path).fileName()), error);
+        return false;
+    }
+    return true;
+}
+
+bool MainWindow::save() {
+    if (m_document->filePath().isEmpty()) return saveAs();
+    QString error;
+    if (!m_document->save(m_document->filePath(), &error)) {
+        m_prompts.error(tr("Save Scene"), tr("The scene was not saved. The file on disk is unchanged."), error);
+        return false;
+    }
+    removeRecoveryFile();
+    statusBar()->showMessage(tr("Saved %1").arg(m_document->filePath()), 4000);
+    return true;
+}
+
+bool MainWindow::saveAs() {
+    const QString dir = m_document->filePath().isEmpty() ? QDir::homePath() : m_document->filePath();
+    QString path = m_prompts.chooseFile(FileChoice::Save, tr("Save Scene As"), dir);
+    if (path.isEmpty()) return false;
+    if (QFileInfo(path).suffix().isEmpty()) path += QStringLiteral(".json");
+    QString error;
+    if (!m_document->save(path, &error)) {
+        m_prompts.error(tr("Save Scene"), tr("The scene was not saved. The file on disk is unchanged."), error);
+        return false;
+    }
+    removeRecoveryFile();
+    addRecentFile(path);
+    return true;
+}
+
+bool MainWindow::revert() {
+    if (m_document->filePath().isEmpty()) return false;
+    QString error;
+    if (!m_document->revert(&error)) {
+        m_prompts.error(tr("Revert"), tr("The file could not be read again; the scene is as it was."), error);
+        return false;
+    }
+    removeRecoveryFile();
+    return true;
+}
+
+bool MainWindow::maybeSave() {
+    if (!m_document->isModified()) return true;
+    switch (m_prompts.unsavedChanges(m_document->displayName())) {
+    case UnsavedChoice::Save: return save();
+    case UnsavedChoice::Discard: return true;
+    case UnsavedChoice::Cancel: return false;
+    }
+    return false;
+}
+
+void MainWindow::importThesisScene() {
+    const QString path = m_prompts.chooseFile(FileChoice::Open, tr("Import Thesis Scene"),
+                                              QDir(examplesDirectory()).filePath(QStringLiteral("thesis")));
+    if (!path.isEmpty()) open(path);  // the document recognises the format and imports it
+}
+
+QStringList MainWindow::recentFiles() const {
+    return QSettings().value(kRecentFilesKey).toStringList();
+}
+
+void MainWindow::clearRecentFiles() {
+    QSettings().remove(kRecentFilesKey);
+    rebuildRecentMenu();
+}
+
+void MainWindow::addRecentFile(const QString& path) {
+    const QString absolute = QFileInfo(path).absoluteFilePath();
+    QStringList files = recentFiles();
+    files.removeAll(absolute);
+    files.prepend(absolute);
+    while (files.size() > kMaxRecentFiles) files.removeLast();
+    QSettings().setValue(kRecentFilesKey, files);
+    rebuildRecentMenu();
+}
+
+void MainWindow::rebuildRecentMenu() {
+    m_recentMenu->clear();
+    const QStringList files = recentFiles();
+    for (int i = 0; i < files.size(); ++i) {
+        const QString& path = files[i];
+        // &1..&9 as keyboard accelerators, as most editors do.
+        QAction* a = m_recentMenu->addAction(i < 9 ? tr("&%1 %2").arg(i + 1).arg(QFileInfo(path).fileName())
+                                                   : QFileInfo(path).fileName());
+        a->setStatusTip(path);
+        a->setToolTip(path);
+        connect(a, &QAction::triggered, this, [this, path] { open(path); });
+    }
+    if (!files.isEmpty()) m_recentMenu->addSeparator();
+    QAction* clear = m_recentMenu->addAction(tr("&Clear Menu"), this, &MainWindow::clearRecentFiles);
+    clear->setObjectName(QStringLiteral("clearRecent"));
+    clear->setEnabled(!files.isEmpty());
+}
+
+QString MainWindow::examplesDirectory() {
+    // Installed: scenes/ beside the program. From a build tree: the repository's scenes/.
+    const QString beside = QDir(QCoreApplication::applicationDirPath()).filePath(QStringLiteral("scenes"));
+    if (QFileInfo(beside).isDir()) return beside;
+    return QStringLiteral(INTERPLAY_SCENES_DIR);
+}
+
+void MainWindow::rebuildExamplesMenu() {
+    m_examplesMenu->clear();
+    const QDir dir(examplesDirectory());
+    const auto addScenes = [this](QMenu* menu, const QDir& folder) {
+        for (const QFileInfo& info : folder.entryInfoList({QStringLiteral("*.json")}, QDir::Files, QDir::Name)) {
+            const QString path = info.absoluteFilePath();
+            connect(menu->addAction(info.completeBaseName()), &QAction::triggered, this, [this, path] { open(path); });
+        }
+    };
+    addScenes(m_examplesMenu, dir);
+    if (dir.exists(QStringLiteral("thesis"))) addScenes(m_examplesMenu->addMenu(tr("Thesis")), QDir(dir.filePath(QStringLiteral("thesis"))));
+    m_examplesMenu->setEnabled(!m_examplesMenu->isEmpty());
+}
+
+// ---- Watching the file, autosave and recovery -------------------------------------------------------
+
+void MainWindow::watchDocumentFile() {
+    if (!m_watcher->files().isEmpty()) m_watcher->removePaths(m_watcher->files());
+    const QString path = m_document->filePath();
+    m_expectedFileStamp = path.isEmpty() ? QString() : fileStamp(path);
+    // Saving replaces the file (write and rename), which drops it from the watch: add it again.
+    if (!path.isEmpty() && QFileInfo::exists(path)) m_watcher->addPath(path);
+}
+
+void MainWindow::documentFileChanged(const QString& path) {
+    if (path != m_document->filePath()) return;
+    const QString stamp = fileStamp(path);
+    if (stamp.isEmpty() || stamp == m_expectedFileStamp) {
+        // Deleted (nothing to reload; saving will recreate it), or our own write.
+        if (!stamp.isEmpty()) m_watcher->addPath(path);
+        return;
+    }
+    m_expectedFileStamp = stamp;  // ask once per outside change
+    m_watcher->addPath(path);
+    const QString question =
+        m_document->isModified()
+            ? tr("\"%1\" was changed by another program. Reload it and lose your unsaved changes?").arg(QFileInfo(path).fileName())
+            : tr("\"%1\" was changed by another program. Reload it?").arg(QFileInfo(path).fileName());
+    if (m_prompts.confirm(tr("File Changed"), question)) revert();
+}
+
+QString MainWindow::recoveryFilePath() {
+    return QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation))
+        .filePath(QStringLiteral("recovery/autosave.json"));
+}
+
+void MainWindow::setAutosaveInterval(int milliseconds) {
+    m_autosaveTimer->start(milliseconds);
+}
+
+void MainWindow::autosaveNow() {
+    if (!m_document->isModified()) return;
+    const QString path = recoveryFilePath();
+    QDir().mkpath(QFileInfo(path).absolutePath());
+    const std::string text = simcore::serializeScene(m_document->scene());
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly) || file.write(text.data(), static_cast<qint64>(text.size())) < 0 || !file.commit()) {
+        statusBar()->showMessage(tr("Autosave failed: %1").arg(file.errorString()), 8000);
+        return;
+    }
+    // Which file the recovered scene belongs to, so Save after recovery goes to the right place.
+    QSaveFile origin(recoveryMetaPath());
+    if (origin.open(QIODevice::WriteOnly)) {
+        origin.write(m_document->filePath().toUtf8());
+        origin.commit();
     }
 }
 
+void MainWindow::removeRecoveryFile() {
+    QFile::remove(recoveryFilePath());
+    QFile::remove(recoveryMetaPath());
+}
+
+bool MainWindow::offerRecovery() {
+    const QString path = recoveryFilePath();
+    if (!QFileInfo::exists(path)) return false;
+    QFile originFile(recoveryMetaPath());
+    const QString origin = originFile.open(QIODevice::ReadOnly) ? QString::fromUtf8(originFile.readAll()) : QString();
+    const QString name = origin.isEmpty() ? tr("an untitled scene") : QStringLiteral("\"%1\"").arg(QFileInfo(origin).fileName());
+    if (!m_prompts.confirm(tr("Recover Scene"),
+                           tr("Interplay did not close normally. Recover the unsaved changes to %1?").arg(name))) {
+        removeRecoveryFile();
+        return false;
+    }
+    const simcore::SceneLoadResult result = simcore::loadSceneFile(std::filesystem::path(QFile::encodeName(path).toStdString()));
+    if (!result.ok()) {
+        QStringList errors;
+        for (const simcore::Diagnostic& d : result.diagnostics) errors << QString::fromStdString(d.toString());
+        m_prompts.error(tr("Recover Scene"), tr("The recovery file could not be read."), errors.join(u'\n'));
+        return false;
+    }
+    m_document->restoreRecovered(*result.scene, origin);
+    return true;
+}
+
+// ---- Editing --------------------------------------------------------------------------------------
+
+void MainWindow::addBody(int shapeType) {
+    const auto type = static_cast<simcore::ShapeType>(shapeType);
+    const simcore::Shape shape = templateShape(type);
+    const simcore::Aabb bounds = simcore::localBounds(shape);
+    const simcore::Vec3 position = m_viewport->placementPoint(0.5f * (bounds.max.y - bounds.min.y));
+    simcore::SceneBody body = templateBody(type, m_document->uniqueBodyName(shapeDisplayName(type)), position);
+    const QString name = QString::fromStdString(body.body.name);
+    m_document->undoStack()->push(
+        new AddBodies(m_document, tr("Add %1").arg(name), {m_document->bodyCount()}, {std::move(body)}));
+}
+
+void MainWindow::deleteSelection() {
+    if (m_document->selectedBodies().isEmpty()) return;
+    m_document->undoStack()->push(new RemoveBodies(m_document, m_document->selectedBodies()));
+}
+
+void MainWindow::duplicateSelection() {
+    const QList<int> selection = m_document->selectedBodies();
+    if (selection.isEmpty()) return;
+    static const QRegularExpression trailingNumber(QStringLiteral("\\s*\\d+$"));
+    std::vector<simcore::SceneBody> copies;
+    QList<int> indices;
+    QStringList newNames;
+    for (int index : selection) {
+        simcore::SceneBody copy = m_document->body(index);
+        // "Box 3" copies to the next free "Box N"; the copy sits beside the original, not in it.
+        const QString base = QString::fromStdString(copy.body.name).remove(trailingNumber);
+        newNames << m_document->uniqueBodyName(base.isEmpty() ? tr("Body") : base, newNames);
+        copy.body.name = newNames.last().toStdString();
+        const simcore::Aabb bounds = simcore::worldBounds(copy.body.shape, {copy.body.position, copy.body.orientation});
+        copy.body.position.x += bounds.max.x - bounds.min.x + 0.1f;
+        indices << m_document->bodyCount() + static_cast<int>(copies.size());
+        copies.push_back(std::move(copy));
+    }
+    m_document->undoStack()->push(new AddBodies(m_document, tr("Duplicate %1").arg(bodiesLabel(*m_document, selection)),
+                                                indices, std::move(copies)));
+}
+
+void MainWindow::applySimulatedPose() {
+    const simcore::World* world = m_simulation->world();
+    if (!world) return;
+    QList<int> indices;
+    std::vector<simcore::SceneBody> after;
+    const auto& ids = m_simulation->bodyIds();
+    for (int i = 0; i < m_document->bodyCount() && i < static_cast<int>(ids.size()); ++i) {
+        const simcore::BodyId id = ids[static_cast<std::size_t>(i)];
+        if (!world->contains(id)) continue;
+        simcore::SceneBody body = m_document->body(i);
+        body.body.position = world->position(id);
+        body.body.orientation = world->orientation(id);
+        body.body.linearVelocity = world->linearVelocity(id);
+        body.body.angularVelocity = world->angularVelocity(id);
+        indices << i;
+        after.push_back(std::move(body));
+    }
+    if (indices.isEmpty()) return;
+    m_document->undoStack()->push(
+        new ChangeBodies(m_document, tr("Apply Simulated Pose"), BodyField::Pose, indices, std::move(after)));
+}
+
+void MainWindow::throwBody() {
+    const auto type = static_cast<simcore::ShapeType>(m_throwShapes->checkedAction()->data().toInt());
+    const Camera& camera = m_viewport->camera();
+    const int thrown = static_cast<int>(m_simulation->bodyIds().size() - m_simulation->authoredScene().bodies.size());
+    simcore::SceneBody body = templateBody(type, tr("Thrown %1").arg(thrown + 1), camera.eye() + camera.forward() * 1.5f);
+    body.body.linearVelocity = camera.forward() * kThrowSpeed;
+    QString error;
+    if (!m_simulation->spawn(body, &error).isValid()) {
+        statusBar()->showMessage(tr("Could not throw: %1").arg(error), 8000);
+        return;
+    }
+    m_simulation->play();  // a throw is meant to fly
+}
+
+// ---- Keeping things in step ------------------------------------------------------------------------
+
+void MainWindow::syncSimulation() {
+    if (m_bodiesEdited) {
+        QString error;
+        if (!m_simulation->setScene(m_document->scene(), &error)) {
+            showSimulationError(tr("The edited scene cannot be simulated: %1").arg(error));
+        }
+    } else if (m_settingsEdited) {
+        QString error;
+        if (!m_simulation->applySettings(m_document->scene().settings, &error)) {
+            showSimulationError(tr("The settings cannot be used: %1").arg(error));
+        }
+    }
+    m_bodiesEdited = m_settingsEdited = false;
+}
+
 void MainWindow::documentSceneReplaced() {
+    m_bodiesEdited = m_settingsEdited = false;
+    // A clean scene (new, opened, reverted) makes any earlier autosave stale.
+    if (!m_document->isModified()) removeRecoveryFile();
     QString error;
     if (!m_simulation->setScene(m_document->scene(), &error)) {
-        QMessageBox::warning(this, tr("Scene"), tr("The scene cannot be simulated: %1").arg(error));
+        m_prompts.error(tr("Scene"), tr("The scene cannot be simulated."), error);
         return;
     }
     m_viewport->frameScene();
 }
 
+void MainWindow::syncTreeSelection() {
+    if (m_syncingSelection) return;
+    m_syncingSelection = true;
+    QItemSelection selection;
+    for (int body : m_document->selectedBodies()) {
+        selection.select(m_sceneTreeModel->indexOfBody(body, 0),
+                         m_sceneTreeModel->indexOfBody(body, SceneTreeModel::ColumnCount - 1));
+    }
+    m_sceneTree->selectionModel()->select(selection, QItemSelectionModel::ClearAndSelect);
+    if (!m_document->selectedBodies().isEmpty()) {
+        m_sceneTree->scrollTo(m_sceneTreeModel->indexOfBody(m_document->selectedBodies().first()));
+    }
+    m_syncingSelection = false;
+}
+
 void MainWindow::updateTitle() {
     setWindowTitle(tr("[*]%1 — Interplay").arg(m_document->displayName()));
     setWindowModified(m_document->isModified());
+    action(QStringLiteral("revert"))->setEnabled(!m_document->filePath().isEmpty());
 }
 
 void MainWindow::updateStatus() {
@@ -155,15 +798,59 @@ void MainWindow::updateStatus() {
         m_bodiesLabel->setText(tr("no scene"));
         return;
     }
+    const simcore::StepCounters& counters = world->lastStepProfile().counters;
     m_timeLabel->setText(tr("t = %1 s").arg(world->simulatedTime(), 0, 'f', 2));
     m_costLabel->setText(tr("%1 ms/step").arg(world->lastStepProfile().totalMs, 0, 'f', 3));
-    const auto count = static_cast<int>(world->bodyCount());
-    m_bodiesLabel->setText(count == 1 ? tr("1 body") : tr("%1 bodies").arg(count));
+    const auto total = static_cast<int>(world->bodyCount());
+    // Before the first step the engine has not counted yet: everything starts awake.
+    const int awake = world->stepCount() == 0 ? total : static_cast<int>(counters.awakeBodies);
+    m_bodiesLabel->setText(tr("%1 / %2 awake").arg(awake).arg(total));
 }
 
 void MainWindow::showSimulationError(const QString& message) {
     statusBar()->showMessage(message, 10000);
-    QMessageBox::warning(this, tr("Simulation"), message);
+    m_prompts.error(tr("Simulation"), message, QString());
+}
+
+// ---- Window events ----------------------------------------------------------------------------------
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+    if (!maybeSave()) {
+        event->ignore();
+        return;
+    }
+    saveLayout();
+    removeRecoveryFile();  // a normal exit leaves nothing to recover
+    event->accept();
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
+    const QList<QUrl> urls = event->mimeData()->urls();
+    if (urls.size() == 1 && urls.first().isLocalFile() &&
+        urls.first().toLocalFile().endsWith(QStringLiteral(".json"), Qt::CaseInsensitive)) {
+        event->acceptProposedAction();
+    }
+}
+
+void MainWindow::dropEvent(QDropEvent* event) {
+    const QList<QUrl> urls = event->mimeData()->urls();
+    if (urls.isEmpty()) return;
+    event->acceptProposedAction();
+    // Opening asks questions (unsaved changes); not while the drag source waits for the drop.
+    const QString path = urls.first().toLocalFile();
+    QTimer::singleShot(0, this, [this, path] { open(path); });
+}
+
+void MainWindow::restoreLayout() {
+    QSettings settings;
+    restoreGeometry(settings.value(kGeometryKey).toByteArray());
+    restoreState(settings.value(kStateKey).toByteArray());
+}
+
+void MainWindow::saveLayout() {
+    QSettings settings;
+    settings.setValue(kGeometryKey, saveGeometry());
+    settings.setValue(kStateKey, saveState());
 }
 
 }  // namespace interplay

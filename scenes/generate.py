@@ -20,7 +20,8 @@ the benchmark measures the engine at its defaults, as it does Bullet at Bullet's
 they are measurement inputs (bench/bullet_compare.cpp reads them).
 
 Demo scenes (scenes/): the same four with colours, plus tower40 (with the stiffer contacts a stack
-that tall needs), mixed_rain, incline, newtons_cradle, heavy_on_light and dominoes. Choices that a reader could wonder about are stated in the function
+that tall needs), mixed_rain, incline, newtons_cradle, heavy_on_light and dominoes; and the joint
+demos chain20, hinge_door, ragdoll and pendulums. Choices that a reader could wonder about are stated in the function
 that builds each scene and, where it helps in the editor, in the body names.
 """
 
@@ -189,8 +190,9 @@ def settings(gravity=None, sleep=True):
     return s
 
 
-def scene(settings_, bodies):
-    return {"format": "interplay.scene", "version": 1, "settings": settings_, "bodies": bodies, "joints": []}
+def scene(settings_, bodies, joints=None):
+    return {"format": "interplay.scene", "version": 1, "settings": settings_, "bodies": bodies,
+            "joints": joints if joints is not None else []}
 
 
 def ground(half=(50, 0.5, 50), friction=0.6, color=None, name="ground"):
@@ -528,6 +530,127 @@ def dominoes():
 
 
 # ----------------------------------------------------------------------------------------------
+# Joint demos. Anchors and axes are world coordinates of the scene as written (the rest pose).
+
+
+def joint(name, type_, body_a, anchor, body_b=None, **options):
+    """A joint between body_a and body_b (None: the world). Options use the file's key names."""
+    j = {"name": name, "type": type_, "bodyA": body_a}
+    if body_b is not None:
+        j["bodyB"] = body_b
+    j["anchor"] = anchor
+    j.update(options)
+    return j
+
+
+def chain20():
+    """A pendulum of 20 hinged links (0.25 m, 0.5 kg boxes, 5 m in all) released horizontally from a
+    pivot 6 m up; the hinges turn about z. Its free end whips through at over 10 m/s. The scene asks
+    for 8 substeps and 120 Hz joints (twice the default cost): then no hinge opens by 1 cm, where
+    the defaults let it stretch 1.6 cm (tests/test_joints.cpp measures both). Sleep is off."""
+    s = settings(sleep=False)
+    s["substeps"] = 8
+    s["joint"] = {"hertz": 120}
+    half = 0.125
+    pivot = [-2.5, 6, 0]
+    bodies = [ground(half=(20, 0.5, 20), color=GROUND_COLOR),
+              body("pivot post", box(0.1, 3, 0.1), [pivot[0], 3, -0.2], motion="static", color=[0.5, 0.5, 0.55])]
+    joints = []
+    for n in range(20):
+        x0 = pivot[0] + 2 * half * n
+        name = "link %d" % (n + 1)
+        bodies.append(body(name, box(half, 0.03, 0.03), [x0 + half, pivot[1], 0], mass=0.5,
+                           color=hsv(n / 20, 0.6, 0.9)))
+        joints.append(joint("hinge %d" % (n + 1), "hinge", name, [x0, pivot[1], 0],
+                            "link %d" % n if n > 0 else None, axis=[0, 0, 1]))
+    return scene(s, bodies, joints)
+
+
+def hinge_door():
+    """A 20 kg door (1 m wide, 2 m high) hinged on a vertical axis to a static post and driven by a
+    motor at 1 rad/s with at most 30 N m, limited to [0, 1.6] rad: it swings open, pushes a crate
+    out of its way, and the motor holds it against the limit. The door is the hinge's bodyA, so the
+    angle and the motor's speed are the door's relative to the post, about +y (x towards -z)."""
+    bodies = [ground(half=(10, 0.5, 10), color=GROUND_COLOR),
+              body("post", box(0.05, 1.1, 0.05), [-0.05, 1.1, 0], motion="static", color=[0.45, 0.4, 0.35]),
+              body("door", box(0.5, 1.0, 0.03), [0.52, 1.03, 0], mass=20, friction=0.4, color=[0.7, 0.5, 0.3]),
+              body("crate (in the door's way)", box(0.2, 0.2, 0.2), [0.75, 0.2, -0.45], mass=4, friction=0.5,
+                   color=[0.85, 0.7, 0.35])]
+    joints = [joint("door hinge", "hinge", "door", [0.0, 1.03, 0], "post", axis=[0, 1, 0],
+                    limits={"lower": 0, "upper": 1.6}, motor={"speed": 1, "maxTorque": 30})]
+    return scene(settings(), bodies, joints)
+
+
+def ragdoll():
+    """A ragdoll-ish figure (box torso, sphere head, capsule limbs, density 1000) dropped from 2 m
+    onto three crates, turning as it falls. Ball joints at the neck, shoulders and hips (no cone
+    limits: there are none yet); hinges at the elbows and knees, limited to bend one way
+    (0 .. 2.2 rad and 0 .. 2.4 rad from straight). The limbs start straight, arms out."""
+    skin = [0.95, 0.8, 0.65]
+    cloth = [0.3, 0.45, 0.7]
+    top = 3.0  # torso centre height
+    arm = quat_axis_angle([0, 0, 1], math.pi / 2)  # capsule axis (local y) along x
+    bodies = [ground(half=(10, 0.5, 10), color=GROUND_COLOR)]
+    for n, (x, z) in enumerate(((-0.9, 0.1), (0.0, -0.15), (0.9, 0.2))):  # 10 cm apart
+        bodies.append(body("crate %d" % (n + 1), box(0.4, 0.4, 0.4), [x, 0.4, z], mass=10, color=[0.8, 0.65, 0.4]))
+    bodies.append(body("torso", box(0.2, 0.3, 0.1), [0, top, 0], color=cloth, angular_velocity=[0.6, 0, 1.2]))
+    bodies.append(body("head", sphere(0.12), [0, top + 0.44, 0], color=skin))
+    joints = [joint("neck", "ball", "head", [0, top + 0.32, 0], "torso")]
+    for side, sx in (("left", -1), ("right", 1)):
+        bodies.append(body("%s upper arm" % side, capsule(0.05, 0.1), [sx * 0.37, top + 0.22, 0], orientation=arm,
+                           color=cloth))
+        bodies.append(body("%s forearm" % side, capsule(0.045, 0.1), [sx * 0.68, top + 0.22, 0], orientation=arm,
+                           color=skin))
+        bodies.append(body("%s thigh" % side, capsule(0.07, 0.15), [sx * 0.11, top - 0.54, 0], color=cloth))
+        bodies.append(body("%s shin" % side, capsule(0.06, 0.15), [sx * 0.11, top - 0.99, 0], color=skin))
+        # The elbow bends the forearm towards +z: about +y that is positive on the left arm (along -x)
+        # and negative on the right.
+        elbow = {"lower": 0, "upper": 2.2} if sx < 0 else {"lower": -2.2, "upper": 0}
+        joints += [
+            joint("%s shoulder" % side, "ball", "%s upper arm" % side, [sx * 0.21, top + 0.22, 0], "torso"),
+            joint("%s elbow" % side, "hinge", "%s forearm" % side, [sx * 0.525, top + 0.22, 0], "%s upper arm" % side,
+                  axis=[0, 1, 0], limits=elbow),
+            joint("%s hip" % side, "ball", "%s thigh" % side, [sx * 0.11, top - 0.31, 0], "torso"),
+            # The knee bends the shin backwards (towards -z): positive about +x.
+            joint("%s knee" % side, "hinge", "%s shin" % side, [sx * 0.11, top - 0.765, 0], "%s thigh" % side,
+                  axis=[1, 0, 0], limits={"lower": 0, "upper": 2.4}),
+        ]
+    return scene(settings(), bodies, joints)
+
+
+def pendulums():
+    """Pendulums under a static beam at y = 4, each released from rest, side by side along x: a ball
+    joint and a hinge (1.5 m, released at 30 degrees; the hinge turns about z only), a distance joint
+    (a rigid rod of 1.5 m, released at 60 degrees), a rope (distance 1 .. 2 m, released slack 1.2 m
+    from the pivot), and a 2 Hz spring with damping ratio 0.05 (released at its rest length, so it
+    bounces about the static stretch g / omega^2 = 6.2 cm). Bobs are 1 kg spheres of radius 0.15;
+    the anchors lie 5 cm under the beam, so nothing touches it. Sleep is off."""
+    beam_y = 4.0
+    pivot_y = beam_y - 0.15
+    bodies = [ground(half=(10, 0.5, 10), color=GROUND_COLOR),
+              body("beam", box(5, 0.1, 0.1), [0, beam_y, 0], motion="static", color=[0.5, 0.5, 0.55])]
+    joints = []
+
+    def bob(name, pivot_x, angle, length, color):
+        p = [pivot_x + length * math.sin(angle), pivot_y - length * math.cos(angle), 0]
+        bodies.append(body(name, sphere(0.15), p, mass=1, color=color))
+        return p
+
+    bob("ball bob", -4, math.radians(30), 1.5, hsv(0.0))
+    joints.append(joint("ball pendulum", "ball", "ball bob", [-4, pivot_y, 0]))
+    bob("hinge bob", -2, math.radians(30), 1.5, hsv(0.2))
+    joints.append(joint("hinge pendulum", "hinge", "hinge bob", [-2, pivot_y, 0], axis=[0, 0, 1]))
+    p = bob("rod bob", 0, math.radians(60), 1.5, hsv(0.4))
+    joints.append(joint("rod pendulum", "distance", "rod bob", p, anchorB=[0, pivot_y, 0]))
+    p = bob("rope bob", 2, math.radians(80), 1.2, hsv(0.6))
+    joints.append(joint("rope", "distance", "rope bob", p, anchorB=[2, pivot_y, 0], minLength=1, maxLength=2))
+    p = bob("spring bob", 4, 0, 1.0, hsv(0.8))
+    joints.append(joint("spring", "distance", "spring bob", p, anchorB=[4, pivot_y, 0],
+                        spring={"hertz": 2, "dampingRatio": 0.05}))
+    return scene(settings(sleep=False), bodies, joints)
+
+
+# ----------------------------------------------------------------------------------------------
 
 
 def all_scenes():
@@ -546,6 +669,10 @@ def all_scenes():
         "newtons_cradle.json": newtons_cradle(),
         "heavy_on_light.json": heavy_on_light(),
         "dominoes.json": dominoes(),
+        "chain20.json": chain20(),
+        "hinge_door.json": hinge_door(),
+        "ragdoll.json": ragdoll(),
+        "pendulums.json": pendulums(),
     }
 
 

@@ -16,6 +16,9 @@ packages=(
     xvfb xauth
     # benchmark: Bullet, the reference engine (benchmark only)
     libbullet-dev
+    # reliability: clang with its sanitizer and libFuzzer runtimes, llvm-symbolizer for readable
+    # reports (scripts/test-sanitizers.sh, scripts/fuzz.sh)
+    clang libclang-rt-14-dev llvm
 )
 
 missing=()

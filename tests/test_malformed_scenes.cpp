@@ -87,8 +87,8 @@ private:
         row("bodies not an array", R"({"format": "interplay.scene", "version": 1, "bodies": {}})",
             {"error at /bodies: expected an array, got an object"});
         row("body not an object", v1(sphereBody + ", 7"), {"error at /bodies/1: expected an object, got a number"});
-        row("joints not supported", v1(sphereBody) .chopped(1) + R"(, "joints": [{"type": "hinge"}]})",
-            {"error at /joints/0: joints are not supported by this version yet"});
+        row("joint without bodyA", v1(sphereBody) .chopped(1) + R"(, "joints": [{"type": "hinge"}]})",
+            {"error at /joints/0/bodyA: required key 'bodyA' is missing"});
         row("joints not an array", v1(sphereBody).chopped(1) + R"(, "joints": 3})", {"error at /joints: expected an array"});
 
         // Shapes.

@@ -4,11 +4,25 @@
 
 #include <QFile>
 #include <QFileInfo>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QSaveFile>
 #include <QUndoStack>
 
+#include <algorithm>
 #include <exception>
 
 namespace interplay {
+namespace {
+
+// The loader detects the format itself; the document only needs to know whether to treat the file
+// as an import. A thesis file has an "objects" array and no "format" tag.
+bool isThesisFormat(const QByteArray& text) {
+    const QJsonObject root = QJsonDocument::fromJson(text).object();
+    return !root.contains(QStringLiteral("format")) && root.value(QStringLiteral("objects")).isArray();
+}
+
+}  // namespace
 
 SceneDocument::SceneDocument(QObject* parent)
     : QObject(parent), m_undoStack(new QUndoStack(this)) {
@@ -18,7 +32,9 @@ SceneDocument::SceneDocument(QObject* parent)
 SceneDocument::~SceneDocument() = default;
 
 QString SceneDocument::displayName() const {
-    return m_filePath.isEmpty() ? tr("Untitled") : QFileInfo(m_filePath).fileName();
+    if (!m_filePath.isEmpty()) return QFileInfo(m_filePath).fileName();
+    if (!m_importedName.isEmpty()) return tr("%1 (imported)").arg(m_importedName);
+    return tr("Untitled");
 }
 
 bool SceneDocument::isModified() const {
@@ -26,10 +42,16 @@ bool SceneDocument::isModified() const {
 }
 
 bool SceneDocument::load(const QString& path, QString* error) {
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        if (error) *error = tr("%1: %2").arg(path, file.errorString());
+        return false;
+    }
+    const QByteArray text = file.readAll();
     simcore::SceneLoadResult result;
     try {
-        // encodeName gives the bytes the file system expects for this path.
-        result = simcore::loadSceneFile(std::filesystem::path(QFile::encodeName(path).toStdString()));
+        result = simcore::parseScene(std::string_view(text.constData(), static_cast<std::size_t>(text.size())),
+                                     path.toStdString());
     } catch (const std::exception& e) {
         // The loader reports problems as diagnostics; this only guards against the unexpected.
         if (error) *error = tr("%1: %2").arg(path, QString::fromStdString(e.what()));
@@ -46,25 +68,192 @@ bool SceneDocument::load(const QString& path, QString* error) {
     }
 
     m_loadWarnings = warnings;
-    replaceScene(std::move(*result.scene), QFileInfo(path).absoluteFilePath());
+    const QFileInfo info(path);
+    if (isThesisFormat(text)) {
+        m_importedName = info.fileName();
+        replaceScene(std::move(*result.scene), QString(), true);
+    } else {
+        m_importedName.clear();
+        replaceScene(std::move(*result.scene), info.absoluteFilePath(), false);
+    }
     return true;
+}
+
+bool SceneDocument::save(const QString& path, QString* error) {
+    const std::string text = simcore::serializeScene(m_scene);
+    // QSaveFile writes a temporary file and renames it over the target on commit(): a failure at
+    // any point leaves the old file as it was.
+    QSaveFile file(path);
+    const bool written = file.open(QIODevice::WriteOnly) &&
+                         file.write(text.data(), static_cast<qint64>(text.size())) == static_cast<qint64>(text.size()) &&
+                         file.commit();
+    if (!written) {
+        if (error) *error = tr("%1 could not be written: %2").arg(path, file.errorString());
+        return false;
+    }
+    m_importedName.clear();
+    setFilePath(QFileInfo(path).absoluteFilePath());
+    m_undoStack->setClean();
+    emit saved(m_filePath);
+    return true;
+}
+
+bool SceneDocument::revert(QString* error) {
+    if (m_filePath.isEmpty()) {
+        if (error) *error = tr("The scene has no file to revert to.");
+        return false;
+    }
+    const QString path = m_filePath;  // a copy: load() assigns m_filePath while reading `path`
+    return load(path, error);
 }
 
 void SceneDocument::newDefault() {
     m_loadWarnings.clear();
-    replaceScene(simcore::defaultScene(), QString());
+    m_importedName.clear();
+    replaceScene(simcore::defaultScene(), QString(), false);
 }
 
-void SceneDocument::replaceScene(simcore::Scene scene, const QString& filePath) {
-    m_scene = std::move(scene);
-    // History refers to the old scene; a fresh document starts clean with no history.
-    m_undoStack->clear();
-    m_undoStack->setClean();
-    if (m_filePath != filePath) {
-        m_filePath = filePath;
-        emit filePathChanged(m_filePath);
+void SceneDocument::newEmpty() {
+    simcore::Scene scene = simcore::defaultScene();
+    std::erase_if(scene.bodies, [](const simcore::SceneBody& b) { return b.body.motion != simcore::MotionType::Static; });
+    m_loadWarnings.clear();
+    m_importedName.clear();
+    replaceScene(std::move(scene), QString(), false);
+}
+
+void SceneDocument::restoreRecovered(simcore::Scene scene, const QString& originalPath) {
+    m_loadWarnings.clear();
+    m_importedName.clear();
+    replaceScene(std::move(scene), originalPath, true);
+}
+
+QString SceneDocument::uniqueBodyName(const QString& base, const QStringList& alsoTaken) const {
+    for (int n = 1;; ++n) {
+        const QString candidate = QStringLiteral("%1 %2").arg(base).arg(n);
+        const std::string name = candidate.toStdString();
+        const bool used = alsoTaken.contains(candidate) ||
+                          std::any_of(m_scene.bodies.begin(), m_scene.bodies.end(),
+                                      [&](const simcore::SceneBody& b) { return b.body.name == name; });
+        if (!used) return candidate;
     }
+}
+
+void SceneDocument::setSelectedBodies(QList<int> indices) {
+    std::sort(indices.begin(), indices.end());
+    indices.erase(std::unique(indices.begin(), indices.end()), indices.end());
+    indices.removeIf([this](int i) { return i < 0 || i >= bodyCount(); });
+    if (indices == m_selection) return;
+    m_selection = std::move(indices);
+    emit selectionChanged();
+}
+
+void SceneDocument::insertBody(int index, simcore::SceneBody body) {
+    Q_ASSERT(index >= 0 && index <= bodyCount());
+    emit bodyAboutToBeInserted(index);
+    m_scene.bodies.insert(m_scene.bodies.begin() + index, std::move(body));
+    renumberBodies([index](int i) { return i >= index ? i + 1 : i; });
+    emit bodyInserted(index);
+}
+
+simcore::SceneBody SceneDocument::takeBody(int index) {
+    Q_ASSERT(index >= 0 && index < bodyCount());
+    Q_ASSERT(jointsOf(index).isEmpty());
+    emit bodyAboutToBeRemoved(index);
+    simcore::SceneBody body = std::move(m_scene.bodies[static_cast<std::size_t>(index)]);
+    m_scene.bodies.erase(m_scene.bodies.begin() + index);
+    const bool wasSelected = m_selection.removeAll(index) > 0;
+    renumberBodies([index](int i) { return i > index ? i - 1 : i; });
+    emit bodyRemoved(index);
+    if (wasSelected) emit selectionChanged();
+    return body;
+}
+
+void SceneDocument::moveBody(int from, int to) {
+    Q_ASSERT(from >= 0 && from < bodyCount() && to >= 0 && to < bodyCount());
+    if (from == to) return;
+    emit bodyAboutToBeMoved(from, to);
+    auto& bodies = m_scene.bodies;
+    if (from < to) {
+        std::rotate(bodies.begin() + from, bodies.begin() + from + 1, bodies.begin() + to + 1);
+    } else {
+        std::rotate(bodies.begin() + to, bodies.begin() + from, bodies.begin() + from + 1);
+    }
+    // Selection and joints follow the bodies, not the rows.
+    renumberBodies([from, to](int i) {
+        if (i == from) return to;
+        if (from < to && i > from && i <= to) return i - 1;
+        if (to < from && i >= to && i < from) return i + 1;
+        return i;
+    });
+    emit bodyMoved(from, to);
+}
+
+void SceneDocument::renumberBodies(const std::function<int(int)>& newIndex) {
+    for (int& selected : m_selection) selected = newIndex(selected);
+    std::sort(m_selection.begin(), m_selection.end());
+    const auto renumber = [&newIndex](std::size_t& body) { body = static_cast<std::size_t>(newIndex(static_cast<int>(body))); };
+    for (simcore::SceneJoint& joint : m_scene.joints) {
+        renumber(joint.bodyA);
+        if (joint.bodyB) renumber(*joint.bodyB);
+    }
+}
+
+void SceneDocument::insertJoint(int index, simcore::SceneJoint joint) {
+    Q_ASSERT(index >= 0 && index <= jointCount());
+    emit jointAboutToBeInserted(index);
+    m_scene.joints.insert(m_scene.joints.begin() + index, std::move(joint));
+    emit jointInserted(index);
+}
+
+simcore::SceneJoint SceneDocument::takeJoint(int index) {
+    Q_ASSERT(index >= 0 && index < jointCount());
+    emit jointAboutToBeRemoved(index);
+    simcore::SceneJoint joint = std::move(m_scene.joints[static_cast<std::size_t>(index)]);
+    m_scene.joints.erase(m_scene.joints.begin() + index);
+    emit jointRemoved(index);
+    return joint;
+}
+
+QList<int> SceneDocument::jointsOf(int index) const {
+    QList<int> attached;
+    const auto body = static_cast<std::size_t>(index);
+    for (std::size_t j = 0; j < m_scene.joints.size(); ++j) {
+        const simcore::SceneJoint& joint = m_scene.joints[j];
+        if (joint.bodyA == body || joint.bodyB == body) attached << static_cast<int>(j);
+    }
+    return attached;
+}
+
+void SceneDocument::setBody(int index, simcore::SceneBody body, BodyField field) {
+    m_scene.bodies.at(static_cast<std::size_t>(index)) = std::move(body);
+    emit bodyChanged(index, field);
+}
+
+void SceneDocument::setSettings(const simcore::WorldSettings& settings) {
+    m_scene.settings = settings;
+    emit settingsChanged();
+}
+
+void SceneDocument::replaceScene(simcore::Scene scene, const QString& filePath, bool startModified) {
+    m_scene = std::move(scene);
+    m_selection.clear();
+    // History refers to the old scene; a fresh document starts with no history.
+    m_undoStack->clear();
+    if (startModified) {
+        m_undoStack->resetClean();  // no reachable clean state: modified until saved
+    } else {
+        m_undoStack->setClean();
+    }
+    emit modifiedChanged(isModified());
+    setFilePath(filePath);
     emit sceneReplaced();
+    emit selectionChanged();
+}
+
+void SceneDocument::setFilePath(const QString& filePath) {
+    if (m_filePath == filePath) return;
+    m_filePath = filePath;
+    emit filePathChanged(m_filePath);
 }
 
 }  // namespace interplay

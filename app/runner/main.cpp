@@ -6,12 +6,15 @@
 #include "simcore/io/scene_io.h"
 
 #include <algorithm>
+#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <optional>
+#include <utility>
+#include <vector>
 
 namespace {
 
@@ -54,9 +57,23 @@ int run(const runner::RunnerOptions& options) {
     if (!loaded.ok()) return kUnreadableScene;
     simcore::Scene& scene = *loaded.scene;
 
-    if (options.timeStep) scene.settings.timeStep = *options.timeStep;
-    if (options.substeps) scene.settings.substeps = *options.substeps;
-    if (options.velocityIterations) scene.settings.solver.velocityIterations = *options.velocityIterations;
+    // --dt, --substeps and --iterations are settings like any other: they go through the same
+    // validation as the file (and --set), so the loader's limits hold for them too.
+    std::vector<std::pair<std::string, std::string>> shortcuts;  // option, assignment
+    if (options.timeStep) {
+        char text[32];
+        const auto written = std::to_chars(text, text + sizeof text, *options.timeStep);  // shortest: same float back
+        shortcuts.emplace_back("--dt", "timeStep=" + std::string(text, written.ptr));
+    }
+    if (options.substeps) shortcuts.emplace_back("--substeps", "substeps=" + std::to_string(*options.substeps));
+    if (options.velocityIterations)
+        shortcuts.emplace_back("--iterations", "solver.velocityIterations=" + std::to_string(*options.velocityIterations));
+    for (const auto& [option, assignment] : shortcuts) {
+        if (auto error = simcore::applySettingOverride(scene, assignment)) {
+            std::cerr << "interplay-run: " << option << ": " << *error << '\n';
+            return kBadArguments;
+        }
+    }
     for (const std::string& assignment : options.settingOverrides) {
         if (auto error = simcore::applySettingOverride(scene, assignment)) {
             std::cerr << "interplay-run: --set " << assignment << ": " << *error << '\n';
@@ -81,11 +98,30 @@ int run(const runner::RunnerOptions& options) {
     }
     simcore::World& world = built->world;
 
+    // --force: every body of that name; a name that matches none is a bad argument.
+    std::vector<std::pair<simcore::BodyId, simcore::Vec3>> forces;
+    for (const runner::ForceOption& f : options.forces) {
+        bool found = false;
+        for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+            if (scene.bodies[i].body.name != f.body) continue;
+            forces.emplace_back(built->bodyIds[i], simcore::Vec3(f.force[0], f.force[1], f.force[2]));
+            found = true;
+        }
+        if (!found) {
+            std::cerr << "interplay-run: --force: the scene has no body named '" << f.body << "'\n";
+            return kBadArguments;
+        }
+    }
+
     // Steps to cover the requested time; the relative slack keeps 2 s at dt = 0.01f (which is
     // 0.0099999998) at 200 steps, not 201.
     const double dt = world.settings().timeStep;
-    auto stepsFor = [dt](double seconds) { return static_cast<std::uint64_t>(std::ceil(seconds / dt * (1.0 - 1e-6))); };
-    const std::uint64_t steps = options.steps ? *options.steps : stepsFor(options.seconds.value_or(1.0));
+    const double wantedSteps = std::ceil(options.seconds.value_or(1.0) / dt * (1.0 - 1e-6));
+    if (!options.steps && !(wantedSteps < 1e15)) {  // also keeps the conversion below defined
+        std::cerr << "interplay-run: --seconds " << *options.seconds << " is more than 1e15 steps of " << dt << " s\n";
+        return kBadArguments;
+    }
+    const std::uint64_t steps = options.steps ? *options.steps : static_cast<std::uint64_t>(wantedSteps);
 
     TraceWriter trace;
     if (!options.tracePath.empty()) {
@@ -99,6 +135,7 @@ int run(const runner::RunnerOptions& options) {
     runner::RunSummary summary;
     summary.initialEnergy = world.kineticEnergy() + world.potentialEnergy();
     for (std::uint64_t s = 0; s < steps; ++s) {
+        for (const auto& [id, force] : forces) world.addForce(id, force);
         const auto start = std::chrono::steady_clock::now();
         world.step();
         summary.wallMs += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -106,6 +143,11 @@ int run(const runner::RunnerOptions& options) {
         const simcore::StepProfile& profile = world.lastStepProfile();
         for (int stage = 0; stage < simcore::kStageCount; ++stage) summary.stageMs[stage] += profile.stageMs[stage];
         summary.maxPenetration = std::max(summary.maxPenetration, profile.maxPenetration);
+        if (world.jointCount() > 0) {
+            const simcore::JointError jointError = world.worstJointError();
+            summary.maxJointError.position = std::max(summary.maxJointError.position, jointError.position);
+            summary.maxJointError.angle = std::max(summary.maxJointError.angle, jointError.angle);
+        }
 
         if (auto bad = world.findNonFiniteBody()) {
             std::cerr << options.scenePath << ": error: body '" << bad->name << "' has a non-finite "

@@ -48,6 +48,11 @@ nlohmann::ordered_json makeReport(const simcore::World& world, const RunSummary&
         {"linearMomentum", toJson(world.linearMomentum())},
         {"angularMomentum", toJson(world.angularMomentum())},
     };
+    const JointError jointError = world.worstJointError();
+    report["metrics"]["jointCount"] = world.jointCount();
+    report["metrics"]["worstJointError"] = {{"position", jointError.position}, {"angle", jointError.angle}};
+    report["metrics"]["maxJointError"] = {{"position", summary.maxJointError.position},
+                                          {"angle", summary.maxJointError.angle}};
 
     nlohmann::ordered_json bodies = nlohmann::ordered_json::array();
     const BodyStorage& b = world.bodies();

@@ -19,6 +19,7 @@ struct RunSummary {
     std::array<double, simcore::kStageCount> stageMs{};     // summed over all steps
     double initialEnergy = 0.0;                              // kinetic + potential before step 1 (J)
     float maxPenetration = 0.0f;                             // deepest contact overlap seen in any step (m)
+    simcore::JointError maxJointError;                       // worst joint position / angle error of any step
 };
 
 nlohmann::ordered_json makeReport(const simcore::World& world, const RunSummary& summary);

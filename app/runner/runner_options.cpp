@@ -1,5 +1,7 @@
 #include "runner_options.h"
 
+#include "simcore/world/quality_preset.h"
+
 #include <charconv>
 #include <cmath>
 #include <limits>
@@ -17,19 +19,43 @@ std::optional<T> parseNumber(const std::string& text) {
     return value;
 }
 
+// "[1, -2.5, 3e3]" (spaces allowed) -> three finite floats.
+std::optional<std::array<float, 3>> parseVector(const std::string& text) {
+    std::string t;
+    for (char c : text)
+        if (c != ' ') t += c;
+    if (t.size() < 2 || t.front() != '[' || t.back() != ']') return std::nullopt;
+    std::array<float, 3> v{};
+    std::size_t start = 1;
+    for (int i = 0; i < 3; ++i) {
+        const std::size_t end = t.find(i < 2 ? ',' : ']', start);
+        if (end == std::string::npos) return std::nullopt;
+        const auto c = parseNumber<float>(t.substr(start, end - start));
+        if (!c || !std::isfinite(*c)) return std::nullopt;
+        v[static_cast<std::size_t>(i)] = *c;
+        start = end + 1;
+    }
+    if (start != t.size()) return std::nullopt;
+    return v;
+}
+
 }  // namespace
 
 const char* usageText() {
     return "usage: interplay-run SCENE.json [--steps N | --seconds T] [--dt S] [--substeps K]\n"
-           "                    [--iterations V] [--set key.path=value]... [--trace FILE.csv]\n"
-           "                    [--out FILE.json] [--save FILE.json]\n"
+           "                    [--iterations V] [--preset NAME] [--set key.path=value]...\n"
+           "                    [--force NAME=[fx,fy,fz]]...\n"
+           "                    [--trace FILE.csv] [--out FILE.json] [--save FILE.json]\n"
            "Runs a scene without a window and prints a JSON report on stdout.\n"
            "  --steps N         number of steps (default: 1 second of simulated time)\n"
            "  --seconds T       simulated time; steps = ceil(T / dt)\n"
            "  --dt S            time step in seconds (settings.timeStep)\n"
            "  --substeps K      substeps per step (settings.substeps)\n"
            "  --iterations V    velocity iterations (settings.solver.velocityIterations)\n"
+           "  --preset NAME     quality preset fast, balanced or accurate (settings.preset), applied\n"
+           "                    before the scene's other settings options, which override it\n"
            "  --set key=value   any scene setting, e.g. --set effects.friction=false\n"
+           "  --force NAME=[fx,fy,fz]  constant force (N) on body NAME in every step\n"
            "  --trace FILE.csv  per-step state of every body\n"
            "  --out FILE.json   also write the report to FILE.json\n"
            "  --save FILE.json  write the scene as run (v1) before stepping; --steps 0 converts\n"
@@ -39,6 +65,7 @@ const char* usageText() {
 ParseResult parseArguments(const std::vector<std::string>& arguments) {
     ParseResult result;
     RunnerOptions& options = result.options;
+    std::optional<std::string> preset;  // --preset NAME, validated
     auto fail = [&result](std::string message) {
         result.error = std::move(message);
         return result;
@@ -81,10 +108,20 @@ ParseResult parseArguments(const std::vector<std::string>& arguments) {
             if (!iterations || *iterations < 1)
                 return fail("--iterations expects an integer >= 1, got '" + value + "'");
             options.velocityIterations = iterations;
+        } else if (arg == "--preset") {
+            if (!simcore::parseQualityPreset(value))
+                return fail("--preset expects fast, balanced or accurate, got '" + value + "'");
+            preset = value;
         } else if (arg == "--set") {
             if (value.find('=') == std::string::npos)
                 return fail("--set expects key.path=value, got '" + value + "'");
             options.settingOverrides.push_back(value);
+        } else if (arg == "--force") {
+            const std::size_t eq = value.rfind('=');
+            const auto force = eq == std::string::npos ? std::nullopt : parseVector(value.substr(eq + 1));
+            if (eq == 0 || !force)
+                return fail("--force expects NAME=[fx,fy,fz] with finite numbers, got '" + value + "'");
+            options.forces.push_back({value.substr(0, eq), *force});
         } else if (arg == "--trace") {
             options.tracePath = value;
         } else if (arg == "--out") {
@@ -97,6 +134,24 @@ ParseResult parseArguments(const std::vector<std::string>& arguments) {
     }
     if (options.scenePath.empty()) return fail("no scene file given");
     if (options.steps && options.seconds) return fail("--steps and --seconds exclude each other");
+    if (preset) {
+        // The preset goes first and every explicit setting option overrides it. The typed options
+        // are applied before the overrides, so with a preset they travel as overrides after it.
+        std::vector<std::string> ordered{"preset=" + *preset};
+        if (options.timeStep) {
+            char text[32];
+            const auto written = std::to_chars(text, text + sizeof text, *options.timeStep);  // shortest: same float back
+            ordered.push_back("timeStep=" + std::string(text, written.ptr));
+        }
+        if (options.substeps) ordered.push_back("substeps=" + std::to_string(*options.substeps));
+        if (options.velocityIterations)
+            ordered.push_back("solver.velocityIterations=" + std::to_string(*options.velocityIterations));
+        options.timeStep.reset();
+        options.substeps.reset();
+        options.velocityIterations.reset();
+        ordered.insert(ordered.end(), options.settingOverrides.begin(), options.settingOverrides.end());
+        options.settingOverrides = std::move(ordered);
+    }
     return result;
 }
 

@@ -1,12 +1,21 @@
 #pragma once
 // Command line of interplay-run (the interface is fixed by the product brief).
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace runner {
+
+// --force NAME=[fx,fy,fz]: a constant force (N) on every body called NAME, at its centre of mass,
+// in every step. Only finiteness is checked: the scene's limits are the loader's business, and a
+// force too large for float arithmetic ends the run with exit 4 (the documented way to test it).
+struct ForceOption {
+    std::string body;
+    std::array<float, 3> force{};
+};
 
 struct RunnerOptions {
     std::string scenePath;
@@ -15,7 +24,11 @@ struct RunnerOptions {
     std::optional<float> timeStep;           // --dt
     std::optional<int> substeps;             // --substeps
     std::optional<int> velocityIterations;   // --iterations
-    std::vector<std::string> settingOverrides;  // --set key.path=value, in order
+    // --set key.path=value, in order. --preset NAME comes first as preset=NAME, followed by --dt,
+    // --substeps and --iterations as overrides (their fields above are then unset), so that every
+    // explicit option overrides the preset.
+    std::vector<std::string> settingOverrides;
+    std::vector<ForceOption> forces;            // --force NAME=[fx,fy,fz], in order
     std::string tracePath;                   // --trace FILE.csv
     std::string outPath;                     // --out FILE.json
     std::string savePath;                    // --save FILE.json

@@ -2,22 +2,36 @@
 // Owns the running world. Play runs a copy of the authored scene; Reset rebuilds it from that scene,
 // so the simulation never changes what the document holds. A timer drives real-time playback with
 // a fixed-step accumulator; stepOnce/stepFrames advance deterministically, whatever the clock says.
+// Interaction with the running world (grabbing a body with a spring, throwing new bodies) goes
+// through simcore's public API only and is forgotten on Reset.
 
 #include "simcore/io/scene.h"
+#include "simcore/world/profiler.h"
 
 #include <QElapsedTimer>
 #include <QObject>
 #include <QString>
 #include <QTimer>
 
+#include <deque>
 #include <memory>
 #include <optional>
 #include <vector>
 
 namespace interplay {
 
+// One step as the profiler panel plots it.
+struct StepSample {
+    double simulatedTime = 0.0;  // s, at the end of the step
+    simcore::StepProfile profile;
+    double kineticEnergy = 0.0;    // J
+    double potentialEnergy = 0.0;  // J, relative to the origin
+};
+
 class SimulationController : public QObject {
     Q_OBJECT
+    Q_PROPERTY(double timeScale READ timeScale WRITE setTimeScale NOTIFY timeScaleChanged)
+    Q_PROPERTY(bool playing READ isPlaying WRITE setPlaying NOTIFY playingChanged)
 
 public:
     explicit SimulationController(QObject* parent = nullptr);
@@ -27,16 +41,42 @@ public:
     // On failure (a body the engine rejects) returns false with the reason in *error and keeps the
     // previous world.
     bool setScene(const simcore::Scene& scene, QString* error = nullptr);
+    // Changes the settings of the running world in place (the simulation keeps its state), and of
+    // the scene Reset returns to. Returns false with the engine's reason if it rejects them.
+    bool applySettings(const simcore::WorldSettings& settings, QString* error = nullptr);
 
     // The running world, or null before the first successful setScene.
     const simcore::World* world() const;
-    // bodyIds()[i] is the world body made from scene body i.
+    // bodyIds()[i] is the world body made from scene body i; bodies thrown in while running follow.
     const std::vector<simcore::BodyId>& bodyIds() const { return m_bodyIds; }
-    // Authored colours by scene index (unset when the scene leaves the choice to the viewer).
+    // Colours by bodyIds() index (unset when the scene leaves the choice to the viewer).
     const std::vector<std::optional<simcore::Vec3>>& authoredColors() const { return m_colors; }
     const simcore::Scene& authoredScene() const { return m_scene; }
+    // The scene body a world body was made from, or -1 (thrown in, or not in this world).
+    int sceneIndexOf(simcore::BodyId id) const;
 
     bool isPlaying() const { return m_timer.isActive(); }
+    // Simulated seconds per real second during playback (slow motion below 1).
+    double timeScale() const { return m_timeScale; }
+    static constexpr double kMinTimeScale = 0.05;
+    static constexpr double kMaxTimeScale = 4.0;
+
+    // Grabbing: a critically damped spring pulls the body's `localPoint` (body frame, m) towards a
+    // target point, applied as a force before every step until released.
+    void beginGrab(simcore::BodyId body, const simcore::Vec3& localPoint, const simcore::Vec3& target);
+    void moveGrab(const simcore::Vec3& target);
+    void endGrab();
+    bool isGrabbing() const { return m_grab.has_value(); }
+    // The grabbed point in world space and its target, for drawing the spring.
+    std::optional<std::pair<simcore::Vec3, simcore::Vec3>> grabLine() const;
+
+    // Adds a body to the running world only (not to the document); Reset removes it again.
+    // Returns an invalid id, with the reason in *error, if the engine rejects it.
+    simcore::BodyId spawn(const simcore::SceneBody& body, QString* error = nullptr);
+
+    // The most recent steps, oldest first, at most kHistoryLength.
+    const std::deque<StepSample>& history() const { return m_history; }
+    static constexpr std::size_t kHistoryLength = 600;
 
     // Real-time catch-up limit: after a stall (debugger, slow frame) at most this many steps run
     // per tick and the rest of the backlog is dropped, so the loop never spirals.
@@ -52,25 +92,38 @@ public slots:
     void stepFrames(int frames);
     // Back to the authored scene, paused.
     void reset();
+    void setTimeScale(double scale);  // clamped to [kMinTimeScale, kMaxTimeScale]
 
 signals:
     void stepped();                     // the world advanced; views redraw
     void worldRebuilt();                // a new world replaced the old one; cached per-body data is stale
+    void bodySpawned(simcore::BodyId id);  // a body joined the running world
     void playingChanged(bool playing);
+    void timeScaleChanged(double scale);
     void simulationError(const QString& message);  // e.g. a non-finite state; playback stops
 
 private:
+    struct Grab {
+        simcore::BodyId body;
+        simcore::Vec3 localPoint{0.0f};
+        simcore::Vec3 target{0.0f};
+    };
+
     void tick();
     bool advance(int steps);  // false when the world went non-finite
+    void applyGrabForce();
 
     simcore::Scene m_scene;
     std::unique_ptr<simcore::BuiltWorld> m_built;
     std::vector<simcore::BodyId> m_bodyIds;
     std::vector<std::optional<simcore::Vec3>> m_colors;
+    std::optional<Grab> m_grab;
+    std::deque<StepSample> m_history;
 
     QTimer m_timer;
     QElapsedTimer m_clock;
-    double m_accumulator = 0.0;  // s of real time not yet simulated
+    double m_accumulator = 0.0;  // s of simulated time not yet run
+    double m_timeScale = 1.0;
 };
 
 }  // namespace interplay

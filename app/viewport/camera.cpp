@@ -76,6 +76,17 @@ void Camera::zoom(float wheelSteps) {
     setDistance(m_distance * std::pow(0.85f, wheelSteps));
 }
 
+void Camera::lookAround(float dxPixels, float dyPixels) {
+    // Same angles as orbit (dragging right turns the view right), but the eye stays put.
+    const glm::vec3 eyeBefore = eye();
+    orbit(dxPixels, dyPixels);
+    m_target = eyeBefore + forward() * m_distance;
+}
+
+void Camera::fly(const glm::vec3& offset) {
+    m_target += offset.x * right() + offset.y * up() + offset.z * forward();
+}
+
 void Camera::frame(const glm::vec3& center, float radius, float aspect) {
     m_target = center;
     // The sphere fits when it fits the narrower of the two fields of view.

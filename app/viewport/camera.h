@@ -38,6 +38,10 @@ public:
     void orbit(float dxPixels, float dyPixels);
     void pan(float dxPixels, float dyPixels, float viewportHeight);  // the point under the cursor follows it
     void zoom(float wheelSteps);  // positive zooms in
+    // First-person gestures (fly mode): turn the view about the eye, and move eye and target
+    // together by `offset` given in the camera's (right, up, forward) axes (m).
+    void lookAround(float dxPixels, float dyPixels);
+    void fly(const glm::vec3& offset);
 
     // Points the camera at a sphere and backs off until it fits the view (keeps yaw and pitch).
     void frame(const glm::vec3& center, float radius, float aspect);

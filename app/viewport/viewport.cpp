@@ -1,13 +1,19 @@
 #include "app/viewport/viewport.h"
 
+#include "app/document/scene_document.h"
+#include "app/document/undo_commands.h"
 #include "app/simulation/simulation_controller.h"
+#include "app/viewport/color_space.h"
+#include "app/viewport/debug_draw_options.h"
 #include "app/viewport/shape_mesh.h"
 
 #include "simcore/world/world.h"
 
+#include <QKeyEvent>
 #include <QMouseEvent>
 #include <QOpenGLContext>
 #include <QOpenGLShaderProgram>
+#include <QUndoStack>
 #include <QWheelEvent>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -26,10 +32,7 @@ namespace {
 // the shaders convert back to sRGB on output.
 
 glm::vec3 srgb(unsigned rgb) {
-    const auto channel = [](unsigned v) {
-        const float c = static_cast<float>(v) / 255.0f;
-        return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
-    };
+    const auto channel = [](unsigned v) { return linearFromSrgb(static_cast<float>(v) / 255.0f); };
     return {channel((rgb >> 16) & 0xFF), channel((rgb >> 8) & 0xFF), channel(rgb & 0xFF)};
 }
 
@@ -51,6 +54,24 @@ constexpr unsigned kBelowHorizon = 0xC3C9D0;  // close to a lit floor, so a floo
 
 // Towards the light (world space): high and from the front left of the default camera, so the faces
 // turned to the viewer are lit and shadows fall behind the bodies, to the right.
+constexpr unsigned kSelectionColor = 0xFFB000;  // amber: reads against sky, floor and every palette colour
+constexpr unsigned kSleepingTint = 0x6E7A8A;    // slate: sleeping bodies fade towards it
+constexpr float kSleepingTintAmount = 0.55f;
+constexpr float kOutlinePixels = 3.0f;
+constexpr unsigned kAabbColor = 0x39D353;
+constexpr unsigned kContactPointColor = 0xFF2E88;
+constexpr unsigned kContactNormalColor = 0xFFE14D;
+constexpr unsigned kGrabColor = 0xFFFFFF;
+constexpr unsigned kJointColor = 0x30343A;  // near black: a rod or a hinge pin, drawn always
+constexpr float kContactNormalLength = 0.3f;  // m
+constexpr float kContactMarkSize = 0.05f;     // m, half-size of the cross marking a contact point
+
+// Fly speed in m/s per metre of camera distance, so flying suits a scene of any size; Shift boosts.
+constexpr float kFlySpeedPerMetre = 0.6f;
+constexpr float kFlyBoost = 4.0f;
+constexpr float kRotateDegreesPerPixel = 0.5f;  // Alt-drag turning a body about the vertical
+constexpr int kMaxCachedMeshes = 512;           // distinct shapes kept on the GPU between worlds
+
 const glm::vec3 kLightDirection = glm::normalize(glm::vec3(-0.35f, 1.0f, 0.55f));
 constexpr int kShadowMapSize = 2048;
 
@@ -210,6 +231,38 @@ void main() {
 }
 )";
 
+// The selection outline: one flat colour, no lighting.
+const char* kFlatVertexShader = R"(#version 330 core
+layout(location = 0) in vec3 aPosition;
+uniform mat4 uModel;
+uniform mat4 uViewProjection;
+void main() { gl_Position = uViewProjection * uModel * vec4(aPosition, 1.0); }
+)";
+
+const char* kFlatFragmentShader = R"(#version 330 core
+uniform vec3 uColor;
+out vec4 fragColor;
+void main() { fragColor = vec4(pow(uColor, vec3(1.0 / 2.2)), 1.0); }
+)";
+
+// Debug overlays: world-space lines with a colour per vertex.
+const char* kLineVertexShader = R"(#version 330 core
+layout(location = 0) in vec3 aPosition;
+layout(location = 1) in vec3 aColor;
+uniform mat4 uViewProjection;
+out vec3 vColor;
+void main() {
+    vColor = aColor;
+    gl_Position = uViewProjection * vec4(aPosition, 1.0);
+}
+)";
+
+const char* kLineFragmentShader = R"(#version 330 core
+in vec3 vColor;
+out vec4 fragColor;
+void main() { fragColor = vec4(pow(vColor, vec3(1.0 / 2.2)), 1.0); }
+)";
+
 QOpenGLShaderProgram* makeProgram(QObject* parent, const char* vertex, const char* fragment) {
     auto* program = new QOpenGLShaderProgram(parent);
     if (!program->addShaderFromSourceCode(QOpenGLShader::Vertex, vertex) ||
@@ -243,6 +296,9 @@ glm::mat4 modelMatrix(const simcore::Transform& t) {
 Viewport::Viewport(QWidget* parent) : QOpenGLWidget(parent) {
     setFocusPolicy(Qt::StrongFocus);
     setMinimumSize(160, 120);
+    m_flyTimer.setInterval(16);
+    connect(&m_flyTimer, &QTimer::timeout, this, &Viewport::flyTick);
+    m_frameClock.start();
 }
 
 Viewport::~Viewport() {
@@ -255,10 +311,28 @@ void Viewport::setSimulation(SimulationController* simulation) {
     m_drawListDirty = true;
     if (m_simulation) {
         connect(m_simulation, &SimulationController::stepped, this, qOverload<>(&QWidget::update));
-        connect(m_simulation, &SimulationController::worldRebuilt, this, [this] {
+        const auto markDirty = [this] {
             m_drawListDirty = true;
             update();
-        });
+        };
+        connect(m_simulation, &SimulationController::worldRebuilt, this, markDirty);
+        connect(m_simulation, &SimulationController::bodySpawned, this, markDirty);
+    }
+    update();
+}
+
+void Viewport::setDocument(SceneDocument* document) {
+    if (m_document) disconnect(m_document, nullptr, this, nullptr);
+    m_document = document;
+    if (m_document) connect(m_document, &SceneDocument::selectionChanged, this, qOverload<>(&QWidget::update));
+    update();
+}
+
+void Viewport::setDebugDrawOptions(DebugDrawOptions* options) {
+    if (m_debugDraw) disconnect(m_debugDraw, nullptr, this, nullptr);
+    m_debugDraw = options;
+    if (m_debugDraw) {
+        connect(m_debugDraw, &DebugDrawOptions::changed, this, qOverload<>(&QWidget::update));
     }
     update();
 }
@@ -266,6 +340,62 @@ void Viewport::setSimulation(SimulationController* simulation) {
 void Viewport::frameScene() {
     m_framePending = true;
     update();
+}
+
+void Viewport::frameSelection() {
+    const simcore::World* world = m_simulation ? m_simulation->world() : nullptr;
+    if (!world || !m_document || m_document->selectedBodies().isEmpty()) {
+        frameScene();
+        return;
+    }
+    simcore::Aabb box;
+    for (int index : m_document->selectedBodies()) {
+        const auto& ids = m_simulation->bodyIds();
+        if (index >= static_cast<int>(ids.size()) || !world->contains(ids[static_cast<std::size_t>(index)])) continue;
+        const simcore::BodyId id = ids[static_cast<std::size_t>(index)];
+        box.grow(simcore::worldBounds(world->shape(id), {world->position(id), world->orientation(id)}));
+    }
+    if (box.isEmpty()) return;
+    m_camera.frameBox(box.min, box.max, static_cast<float>(width()) / static_cast<float>(std::max(height(), 1)), 0.3f);
+    emit cameraChanged();
+    update();
+}
+
+std::pair<glm::vec3, glm::vec3> Viewport::rayThrough(const QPointF& pixel) const {
+    const float w = static_cast<float>(std::max(width(), 1)), h = static_cast<float>(std::max(height(), 1));
+    const glm::mat4 inverse = glm::inverse(m_camera.viewProjection(w / h));
+    const float x = 2.0f * static_cast<float>(pixel.x()) / w - 1.0f;
+    const float y = 1.0f - 2.0f * static_cast<float>(pixel.y()) / h;
+    const glm::vec4 nearPoint = inverse * glm::vec4(x, y, -1.0f, 1.0f);
+    const glm::vec4 farPoint = inverse * glm::vec4(x, y, 1.0f, 1.0f);
+    const glm::vec3 from = glm::vec3(nearPoint) / nearPoint.w;
+    const glm::vec3 to = glm::vec3(farPoint) / farPoint.w;
+    return {m_camera.eye(), glm::normalize(to - from)};
+}
+
+std::optional<simcore::WorldRayHit> Viewport::pick(const QPointF& pixel) const {
+    const simcore::World* world = m_simulation ? m_simulation->world() : nullptr;
+    if (!world) return std::nullopt;
+    const auto [origin, direction] = rayThrough(pixel);
+    // Unit direction: the fraction is a distance, and the far plane bounds what can be seen.
+    return world->castRay(origin, direction, m_camera.farPlane());
+}
+
+int Viewport::sceneBodyAt(const QPointF& pixel) const {
+    const auto hit = pick(pixel);
+    return hit ? m_simulation->sceneIndexOf(hit->body) : -1;
+}
+
+glm::vec3 Viewport::placementPoint(float bodyHalfHeight) const {
+    glm::vec3 point = m_camera.target();
+    point.y = 0.0f;
+    // Drop it from above whatever is already below the target, with a little air.
+    if (const simcore::World* world = m_simulation ? m_simulation->world() : nullptr) {
+        const auto hit = world->castRay(point + glm::vec3(0.0f, 1000.0f, 0.0f), glm::vec3(0.0f, -1.0f, 0.0f), 2000.0f);
+        if (hit) point.y = hit->point.y;
+    }
+    point.y += bodyHalfHeight + 0.5f;
+    return point;
 }
 
 QImage Viewport::grabViewport() {
@@ -302,7 +432,21 @@ void Viewport::initializeGL() {
     m_shadowProgram = makeProgram(this, kShadowVertexShader, kShadowFragmentShader);
     m_skyProgram = makeProgram(this, kSkyVertexShader, kSkyFragmentShader);
     m_gridProgram = makeProgram(this, kGridVertexShader, kGridFragmentShader);
+    m_flatProgram = makeProgram(this, kFlatVertexShader, kFlatFragmentShader);
+    m_lineProgram = makeProgram(this, kLineVertexShader, kLineFragmentShader);
     glGenVertexArrays(1, &m_emptyVao);
+
+    glGenVertexArrays(1, &m_overlayVao);
+    glGenBuffers(1, &m_overlayVbo);
+    glBindVertexArray(m_overlayVao);
+    glBindBuffer(GL_ARRAY_BUFFER, m_overlayVbo);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(OverlayVertex),
+                          reinterpret_cast<const void*>(offsetof(OverlayVertex, position)));
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(OverlayVertex),
+                          reinterpret_cast<const void*>(offsetof(OverlayVertex, color)));
+    glBindVertexArray(0);
     createShadowMap();
 
     m_drawListDirty = true;
@@ -346,8 +490,13 @@ void Viewport::cleanup() {
     delete m_shadowProgram;
     delete m_skyProgram;
     delete m_gridProgram;
-    m_bodyProgram = m_shadowProgram = m_skyProgram = m_gridProgram = nullptr;
+    delete m_flatProgram;
+    delete m_lineProgram;
+    m_bodyProgram = m_shadowProgram = m_skyProgram = m_gridProgram = m_flatProgram = m_lineProgram = nullptr;
     glDeleteVertexArrays(1, &m_emptyVao);
+    glDeleteVertexArrays(1, &m_overlayVao);
+    glDeleteBuffers(1, &m_overlayVbo);
+    m_overlayVao = m_overlayVbo = 0;
     if (m_shadowFbo) glDeleteFramebuffers(1, &m_shadowFbo);
     glDeleteTextures(1, &m_shadowTexture);
     m_emptyVao = m_shadowFbo = m_shadowTexture = 0;
@@ -390,6 +539,7 @@ int Viewport::meshFor(const simcore::Shape& shape) {
 
     const ShapeMesh mesh = buildShapeMesh(shape);
     GpuMesh gpu;
+    gpu.hull = shape.hull;
     gpu.indexCount = static_cast<int>(mesh.indices.size());
     glGenVertexArrays(1, &gpu.vao);
     glGenBuffers(1, &gpu.vbo);
@@ -416,18 +566,30 @@ int Viewport::meshFor(const simcore::Shape& shape) {
 }
 
 void Viewport::rebuildDrawList() {
-    // A new world may hold entirely different shapes: start the cache afresh.
-    releaseMeshes();
+    // Meshes outlive a world (an edit rebuilds it with mostly the same shapes); the cache is only
+    // dropped when edits of sizes have filled it with shapes no longer in use.
+    if (m_meshes.size() > static_cast<std::size_t>(kMaxCachedMeshes)) releaseMeshes();
+    m_draws.clear();
     m_drawListDirty = false;
     const simcore::World* world = m_simulation ? m_simulation->world() : nullptr;
     if (!world) return;
     const auto& ids = m_simulation->bodyIds();
     const auto& colors = m_simulation->authoredColors();
+    const int authored = static_cast<int>(m_simulation->authoredScene().bodies.size());
     m_draws.reserve(ids.size());
     for (std::size_t i = 0; i < ids.size(); ++i) {
         if (!world->contains(ids[i])) continue;
-        const std::optional<glm::vec3> authored = i < colors.size() ? colors[i] : std::nullopt;
-        m_draws.push_back({ids[i], meshFor(world->shape(ids[i])), displayColor(i, authored, world->motionType(ids[i]))});
+        const simcore::Shape& shape = world->shape(ids[i]);
+        const std::optional<glm::vec3> authoredColor = i < colors.size() ? colors[i] : std::nullopt;
+        const simcore::Aabb bounds = simcore::localBounds(shape);
+        BodyDraw draw;
+        draw.id = ids[i];
+        draw.sceneIndex = static_cast<int>(i) < authored ? static_cast<int>(i) : -1;
+        draw.mesh = meshFor(shape);
+        draw.color = displayColor(i, authoredColor, world->motionType(ids[i]));
+        draw.localCenter = bounds.center();
+        draw.localHalfSize = glm::max(0.5f * (bounds.max - bounds.min), glm::vec3(1e-4f));
+        m_draws.push_back(draw);
     }
 }
 
@@ -476,16 +638,155 @@ glm::mat4 Viewport::lightViewProjection() const {
 void Viewport::drawBodies(QOpenGLShaderProgram& program, bool shadowPass) {
     const simcore::World* world = m_simulation->world();
     const simcore::BodyStorage& bodies = world->bodies();
+    const bool tintSleeping = !shadowPass && (!m_debugDraw || m_debugDraw->sleepingTint());
     for (const BodyDraw& draw : m_draws) {
         const int dense = bodies.denseIndex(draw.id);
         if (dense < 0 || draw.mesh < 0) continue;
-        setUniform(program, "uModel", modelMatrix(bodies.transform(static_cast<std::size_t>(dense))));
-        if (!shadowPass) setUniform(program, "uColor", draw.color);
+        const auto i = static_cast<std::size_t>(dense);
+        setUniform(program, "uModel", modelMatrix(bodies.transform(i)));
+        if (!shadowPass) {
+            const bool asleep = bodies.motion[i] == simcore::MotionType::Dynamic && !bodies.awake[i];
+            const glm::vec3 color =
+                tintSleeping && asleep ? glm::mix(draw.color, srgb(kSleepingTint), kSleepingTintAmount) : draw.color;
+            setUniform(program, "uColor", color);
+        }
         const GpuMesh& mesh = m_meshes[static_cast<std::size_t>(draw.mesh)];
         glBindVertexArray(mesh.vao);
         glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
     }
     glBindVertexArray(0);
+}
+
+void Viewport::drawSelectionOutline(const glm::mat4& viewProjection) {
+    if (!m_document || m_document->selectedBodies().isEmpty()) return;
+    const simcore::BodyStorage& bodies = m_simulation->world()->bodies();
+    std::vector<std::pair<const BodyDraw*, simcore::Transform>> selected;
+    for (const BodyDraw& draw : m_draws) {
+        const int dense = bodies.denseIndex(draw.id);
+        if (dense < 0 || draw.mesh < 0 || !m_document->selectedBodies().contains(draw.sceneIndex)) continue;
+        selected.emplace_back(&draw, bodies.transform(static_cast<std::size_t>(dense)));
+    }
+    if (selected.empty()) return;
+
+    // Stencil outline: mark the bodies' silhouettes, then draw them grown by a few pixels where
+    // the mark is not. Both passes ignore depth, so a selected body stays findable behind others.
+    const float pixelsToMetres = 2.0f * std::tan(0.5f * glm::radians(m_camera.fovYDegrees())) /
+                                 static_cast<float>(std::max(height(), 1));
+    glDisable(GL_DEPTH_TEST);
+    glDepthMask(GL_FALSE);
+    glDisable(GL_CULL_FACE);
+    glEnable(GL_STENCIL_TEST);
+    glClear(GL_STENCIL_BUFFER_BIT);
+    glStencilMask(0xFF);
+    m_flatProgram->bind();
+    setUniform(*m_flatProgram, "uViewProjection", viewProjection);
+    setUniform(*m_flatProgram, "uColor", srgb(kSelectionColor));
+    for (int pass = 0; pass < 2; ++pass) {
+        const bool markPass = pass == 0;
+        glColorMask(!markPass, !markPass, !markPass, !markPass);
+        glStencilFunc(markPass ? GL_ALWAYS : GL_NOTEQUAL, 1, 0xFF);
+        glStencilOp(GL_KEEP, GL_KEEP, markPass ? GL_REPLACE : GL_KEEP);
+        for (const auto& [draw, transform] : selected) {
+            glm::mat4 model = modelMatrix(transform);
+            if (!markPass) {
+                // Grow the shape about its bounds' centre by the outline width on every side.
+                const float depth = std::max(glm::length(transform.position - m_camera.eye()), m_camera.nearPlane());
+                const glm::vec3 grow = glm::vec3(kOutlinePixels * pixelsToMetres * depth);
+                model = model * glm::translate(glm::mat4(1.0f), draw->localCenter) *
+                        glm::scale(glm::mat4(1.0f), (draw->localHalfSize + grow) / draw->localHalfSize) *
+                        glm::translate(glm::mat4(1.0f), -draw->localCenter);
+            }
+            setUniform(*m_flatProgram, "uModel", model);
+            const GpuMesh& mesh = m_meshes[static_cast<std::size_t>(draw->mesh)];
+            glBindVertexArray(mesh.vao);
+            glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
+        }
+    }
+    glBindVertexArray(0);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDisable(GL_STENCIL_TEST);
+    glEnable(GL_DEPTH_TEST);
+    glDepthMask(GL_TRUE);
+}
+
+std::vector<Viewport::OverlayVertex> Viewport::overlayLines() const {
+    std::vector<OverlayVertex> lines;
+    const simcore::World* world = m_simulation->world();
+    const auto addLine = [&lines](const glm::vec3& a, const glm::vec3& b, const glm::vec3& color) {
+        lines.push_back({a, color});
+        lines.push_back({b, color});
+    };
+    if (m_debugDraw && m_debugDraw->aabbs()) {
+        const glm::vec3 color = srgb(kAabbColor);
+        const simcore::BodyStorage& bodies = world->bodies();
+        for (std::size_t i = 0; i < bodies.size(); ++i) {
+            const simcore::Aabb box = simcore::worldBounds(bodies.shape[i], bodies.transform(i));
+            const auto corner = [&box](int c) {
+                return glm::vec3((c & 1) ? box.max.x : box.min.x, (c & 2) ? box.max.y : box.min.y,
+                                 (c & 4) ? box.max.z : box.min.z);
+            };
+            // The 12 edges: corners differing in exactly one bit.
+            for (int c = 0; c < 8; ++c) {
+                for (int bit = 1; bit < 8; bit <<= 1) {
+                    if (!(c & bit)) addLine(corner(c), corner(c | bit), color);
+                }
+            }
+        }
+    }
+    const bool points = m_debugDraw && m_debugDraw->contactPoints();
+    const bool normals = m_debugDraw && m_debugDraw->contactNormals();
+    if (points || normals) {
+        const glm::vec3 pointColor = srgb(kContactPointColor), normalColor = srgb(kContactNormalColor);
+        for (const simcore::Contact& contact : world->contacts()) {
+            const simcore::ContactManifold& manifold = contact.manifold;
+            for (int k = 0; k < manifold.pointCount; ++k) {
+                const simcore::ContactPoint& p = manifold.points[static_cast<std::size_t>(k)];
+                const glm::vec3 mid = 0.5f * (p.pointA + p.pointB);
+                if (points) {
+                    for (int axis = 0; axis < 3; ++axis) {
+                        glm::vec3 d(0.0f);
+                        d[axis] = kContactMarkSize;
+                        addLine(mid - d, mid + d, pointColor);
+                    }
+                }
+                if (normals) addLine(mid, mid + manifold.normal * kContactNormalLength, normalColor);
+            }
+        }
+    }
+    // Joints: from each body's centre to the joint's point in the world (the anchor, or a distance
+    // joint's second point, fixed for a joint to the world: a pendulum shows its rod), or between
+    // the two bodies' centres.
+    const auto& ids = m_simulation->bodyIds();
+    const auto centreOf = [&](std::size_t sceneIndex) -> std::optional<glm::vec3> {
+        if (sceneIndex >= ids.size() || !world->contains(ids[sceneIndex])) return std::nullopt;
+        return world->centerOfMass(ids[sceneIndex]);
+    };
+    for (const simcore::SceneJoint& joint : m_simulation->authoredScene().joints) {
+        const auto a = centreOf(joint.bodyA);
+        const glm::vec3 fixedPoint =
+            joint.joint.type == simcore::JointType::Distance ? joint.joint.anchorB : joint.joint.anchor;
+        const auto b = joint.bodyB ? centreOf(*joint.bodyB) : std::optional<glm::vec3>(fixedPoint);
+        if (a && b) addLine(*a, *b, srgb(kJointColor));
+    }
+    if (const auto grab = m_simulation->grabLine()) addLine(grab->first, grab->second, srgb(kGrabColor));
+    return lines;
+}
+
+void Viewport::drawOverlays(const glm::mat4& viewProjection) {
+    const std::vector<OverlayVertex> lines = overlayLines();
+    if (lines.empty()) return;
+    glBindBuffer(GL_ARRAY_BUFFER, m_overlayVbo);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(lines.size() * sizeof(OverlayVertex)), lines.data(),
+                 GL_STREAM_DRAW);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    // On top of everything: contacts lie between bodies, where depth would hide them.
+    glDisable(GL_DEPTH_TEST);
+    m_lineProgram->bind();
+    setUniform(*m_lineProgram, "uViewProjection", viewProjection);
+    glBindVertexArray(m_overlayVao);
+    glDrawArrays(GL_LINES, 0, static_cast<GLsizei>(lines.size()));
+    glBindVertexArray(0);
+    glEnable(GL_DEPTH_TEST);
 }
 
 void Viewport::paintGL() {
@@ -522,7 +823,7 @@ void Viewport::paintGL() {
 
     // 2. Sky: a gradient by view direction, so it tilts with the camera.
     glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
     glDisable(GL_DEPTH_TEST);
     glDepthMask(GL_FALSE);
     glDisable(GL_BLEND);
@@ -592,23 +893,106 @@ void Viewport::paintGL() {
     glDisable(GL_BLEND);
     glDepthMask(GL_TRUE);
     glDepthFunc(GL_LESS);
+
+    // 5. Selection and debug overlays, over everything.
+    if (haveBodies) {
+        drawSelectionOutline(viewProjection);
+        drawOverlays(viewProjection);
+    }
+
+    const qint64 now = m_frameClock.elapsed();
+    m_frameTimes.push_back(now);
+    while (!m_frameTimes.empty() && m_frameTimes.front() <= now - 1000) m_frameTimes.pop_front();
 }
 
-// ---- Mouse ------------------------------------------------------------------------------------
+// ---- Mouse and keys -----------------------------------------------------------------------------
 
 void Viewport::mousePressEvent(QMouseEvent* event) {
-    const bool pan = event->button() == Qt::MiddleButton ||
-                     (event->button() == Qt::LeftButton && (event->modifiers() & Qt::ShiftModifier));
-    if (pan) {
+    if (m_drag != Drag::None) return;  // a second button during a gesture: ignore it
+    m_lastMouse = m_pressMouse = event->position().toPoint();
+    m_pressModifiers = event->modifiers();
+    m_dragMoved = false;
+    m_clickedBody = -1;
+    if (event->button() == Qt::RightButton) {
+        m_drag = Drag::Fly;
+        m_flyClock.start();
+        m_flyTimer.start();
+    } else if (event->button() == Qt::MiddleButton) {
         m_drag = Drag::Pan;
     } else if (event->button() == Qt::LeftButton) {
-        m_drag = Drag::Orbit;
+        const auto hit = pick(event->position());
+        const int sceneIndex = hit ? m_simulation->sceneIndexOf(hit->body) : -1;
+        if (hit && (sceneIndex >= 0 || m_simulation->isPlaying())) {
+            pressOnBody(event, *hit, sceneIndex);
+        } else {
+            m_drag = (event->modifiers() & Qt::ShiftModifier) ? Drag::Pan : Drag::Orbit;
+        }
     } else {
         QOpenGLWidget::mousePressEvent(event);
         return;
     }
-    m_lastMouse = event->position().toPoint();
     event->accept();
+}
+
+void Viewport::pressOnBody(QMouseEvent* event, const simcore::WorldRayHit& hit, int sceneIndex) {
+    m_clickedBody = sceneIndex;
+    const bool extend = event->modifiers() & (Qt::ControlModifier | Qt::ShiftModifier);
+    // Select on press (so a drag moves what was pressed), unless extending: that toggles on release.
+    if (m_document && sceneIndex >= 0 && !extend && !m_document->selectedBodies().contains(sceneIndex)) {
+        m_document->setSelectedBodies({sceneIndex});
+    }
+    if (m_simulation->isPlaying()) {
+        // Grab the hit point; the spring keeps it at the same distance from the eye.
+        const simcore::World* world = m_simulation->world();
+        const glm::vec3 local = glm::inverse(world->orientation(hit.body)) * (hit.point - world->position(hit.body));
+        m_grabDepth = glm::length(hit.point - m_camera.eye());
+        m_simulation->beginGrab(hit.body, local, hit.point);
+        m_drag = Drag::Grab;
+        return;
+    }
+    if (!m_document || extend) {
+        m_drag = Drag::Orbit;
+        return;
+    }
+    m_drag = (event->modifiers() & Qt::AltModifier) ? Drag::RotateBodies : Drag::MoveBodies;
+    m_dragIndices = m_document->selectedBodies();
+    m_dragStartBodies.clear();
+    for (int index : m_dragIndices) m_dragStartBodies.push_back(m_document->body(index));
+    m_dragPlaneHeight = hit.point.y;
+    m_dragStart = hit.point;
+    m_dragPushed = false;
+}
+
+std::optional<glm::vec3> Viewport::dragPlanePoint(const QPointF& pixel) const {
+    const auto [origin, direction] = rayThrough(pixel);
+    // Rays nearly parallel to the plane would throw the body to the horizon.
+    if (std::abs(direction.y) < 1e-3f) return std::nullopt;
+    const float t = (m_dragPlaneHeight - origin.y) / direction.y;
+    if (t <= 0.0f || t > m_camera.farPlane()) return std::nullopt;
+    return origin + t * direction;
+}
+
+void Viewport::dragBodies(const QPointF& position) {
+    std::vector<simcore::SceneBody> after = m_dragStartBodies;
+    QString text;
+    BodyField field;
+    if (m_drag == Drag::MoveBodies) {
+        const auto point = dragPlanePoint(position);
+        if (!point) return;
+        const glm::vec3 offset = *point - m_dragStart;
+        for (simcore::SceneBody& body : after) body.body.position += offset;
+        field = BodyField::Position;
+        text = tr("Move %1").arg(bodiesLabel(*m_document, m_dragIndices));
+    } else {
+        const float degrees = static_cast<float>(position.x() - m_pressMouse.x()) * kRotateDegreesPerPixel;
+        const glm::quat turn = glm::angleAxis(glm::radians(degrees), glm::vec3(0.0f, 1.0f, 0.0f));
+        for (simcore::SceneBody& body : after) body.body.orientation = glm::normalize(turn * body.body.orientation);
+        field = BodyField::Orientation;
+        text = tr("Rotate %1").arg(bodiesLabel(*m_document, m_dragIndices));
+    }
+    // The first command of a drag starts a history entry; the rest merge into it.
+    m_document->undoStack()->push(
+        new ChangeBodies(m_document, text, field, m_dragIndices, std::move(after), std::exchange(m_dragPushed, true)));
 }
 
 void Viewport::mouseMoveEvent(QMouseEvent* event) {
@@ -619,10 +1003,23 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
     const QPoint position = event->position().toPoint();
     const QPoint delta = position - m_lastMouse;
     m_lastMouse = position;
-    if (m_drag == Drag::Orbit) {
-        m_camera.orbit(static_cast<float>(delta.x()), static_cast<float>(delta.y()));
-    } else {
-        m_camera.pan(static_cast<float>(delta.x()), static_cast<float>(delta.y()), static_cast<float>(height()));
+    // A few pixels of jitter are still a click.
+    if ((position - m_pressMouse).manhattanLength() > 3) m_dragMoved = true;
+    if (!m_dragMoved) return;
+    const float dx = static_cast<float>(delta.x()), dy = static_cast<float>(delta.y());
+    switch (m_drag) {
+    case Drag::Orbit: m_camera.orbit(dx, dy); break;
+    case Drag::Pan: m_camera.pan(dx, dy, static_cast<float>(height())); break;
+    case Drag::Fly: m_camera.lookAround(dx, dy); break;
+    case Drag::MoveBodies:
+    case Drag::RotateBodies: dragBodies(event->position()); return;
+    case Drag::Grab: {
+        const auto [origin, direction] = rayThrough(event->position());
+        m_simulation->moveGrab(origin + direction * m_grabDepth);
+        update();
+        return;
+    }
+    case Drag::None: return;
     }
     emit cameraChanged();
     update();
@@ -633,7 +1030,29 @@ void Viewport::mouseReleaseEvent(QMouseEvent* event) {
         QOpenGLWidget::mouseReleaseEvent(event);
         return;
     }
+    if (m_drag == Drag::Grab) m_simulation->endGrab();
+    if (m_drag == Drag::Fly) {
+        m_flyTimer.stop();
+        m_flyKeys.clear();
+    }
+    // A click (no drag): Ctrl/Shift toggles the body in the selection; a plain click on nothing
+    // clears it. Camera gestures that moved select nothing.
+    if (!m_dragMoved && m_document && event->button() == Qt::LeftButton) {
+        const bool extend = m_pressModifiers & (Qt::ControlModifier | Qt::ShiftModifier);
+        QList<int> selection = m_document->selectedBodies();
+        if (extend && m_clickedBody >= 0) {
+            if (!selection.removeOne(m_clickedBody)) selection << m_clickedBody;
+            m_document->setSelectedBodies(selection);
+        } else if (!extend && m_clickedBody < 0) {
+            m_document->setSelectedBodies({});
+        } else if (!extend) {
+            m_document->setSelectedBodies({m_clickedBody});
+        }
+    }
     m_drag = Drag::None;
+    m_dragStartBodies.clear();
+    m_dragIndices.clear();
+    update();
     event->accept();
 }
 
@@ -643,6 +1062,46 @@ void Viewport::wheelEvent(QWheelEvent* event) {
     emit cameraChanged();
     update();
     event->accept();
+}
+
+void Viewport::keyPressEvent(QKeyEvent* event) {
+    static const QSet<int> flyKeys{Qt::Key_W, Qt::Key_A, Qt::Key_S, Qt::Key_D, Qt::Key_Q, Qt::Key_E, Qt::Key_Shift};
+    if (m_drag == Drag::Fly && flyKeys.contains(event->key())) {
+        m_flyKeys.insert(event->key());
+        event->accept();
+        return;
+    }
+    QOpenGLWidget::keyPressEvent(event);
+}
+
+void Viewport::keyReleaseEvent(QKeyEvent* event) {
+    if (!event->isAutoRepeat() && m_flyKeys.remove(event->key())) {
+        event->accept();
+        return;
+    }
+    QOpenGLWidget::keyReleaseEvent(event);
+}
+
+void Viewport::focusOutEvent(QFocusEvent* event) {
+    m_flyKeys.clear();  // a key released in another window never reaches us
+    QOpenGLWidget::focusOutEvent(event);
+}
+
+void Viewport::flyTick() {
+    const float seconds = static_cast<float>(m_flyClock.restart()) * 1e-3f;
+    glm::vec3 move(0.0f);  // (right, up, forward)
+    if (m_flyKeys.contains(Qt::Key_D)) move.x += 1.0f;
+    if (m_flyKeys.contains(Qt::Key_A)) move.x -= 1.0f;
+    if (m_flyKeys.contains(Qt::Key_E)) move.y += 1.0f;
+    if (m_flyKeys.contains(Qt::Key_Q)) move.y -= 1.0f;
+    if (m_flyKeys.contains(Qt::Key_W)) move.z += 1.0f;
+    if (m_flyKeys.contains(Qt::Key_S)) move.z -= 1.0f;
+    if (move == glm::vec3(0.0f)) return;
+    const float speed = kFlySpeedPerMetre * std::max(m_camera.distance(), 2.0f) *
+                        (m_flyKeys.contains(Qt::Key_Shift) ? kFlyBoost : 1.0f);
+    m_camera.fly(glm::normalize(move) * speed * std::min(seconds, 0.1f));
+    emit cameraChanged();
+    update();
 }
 
 }  // namespace interplay

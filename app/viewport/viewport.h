@@ -1,22 +1,35 @@
 #pragma once
 // The 3D view of the running world: lit, shadowed bodies over a ground grid and a sky gradient,
-// seen through an orbit camera. Reads the world through the SimulationController and never
-// changes it. GL resources live as long as the widget's context (released on aboutToBeDestroyed,
-// as in Qt's hellogl2 example).
+// seen through an orbit camera (with a fly mode on the right mouse button and WASD). Draws the
+// document's selection outlined, sleeping bodies tinted and the debug overlays (bounds, contact
+// points and normals). Mouse interaction:
+//   left click            select the body under the cursor (ray cast through simcore);
+//                         Ctrl/Shift-click adds or removes it; a click on nothing clears
+//   left drag on a body   paused: move the selection on a horizontal plane (one undo entry);
+//                         with Alt: turn it about the vertical; playing: pull it with a spring
+//   left drag elsewhere   orbit;  Shift or middle drag: pan;  wheel: zoom
+//   right drag + WASDQE   fly (Shift: faster)
+// GL resources live as long as the widget's context (released on aboutToBeDestroyed, as in Qt's
+// hellogl2 example).
 
 #include "app/viewport/camera.h"
 
-#include "simcore/dynamics/body.h"
+#include "simcore/io/scene.h"
 
+#include <QElapsedTimer>
 #include <QImage>
 #include <QOpenGLExtraFunctions>
 #include <QOpenGLWidget>
 #include <QPoint>
+#include <QSet>
 #include <QSurfaceFormat>
+#include <QTimer>
 
 #include <glm/glm.hpp>
 
+#include <deque>
 #include <map>
+#include <memory>
 #include <optional>
 #include <tuple>
 #include <vector>
@@ -25,6 +38,8 @@ class QOpenGLShaderProgram;
 
 namespace interplay {
 
+class DebugDrawOptions;
+class SceneDocument;
 class SimulationController;
 
 class Viewport : public QOpenGLWidget, protected QOpenGLExtraFunctions {
@@ -35,23 +50,40 @@ public:
     ~Viewport() override;
 
     void setSimulation(SimulationController* simulation);
+    // The document whose selection is drawn and edited; drags push commands on it.
+    void setDocument(SceneDocument* document);
+    void setDebugDrawOptions(DebugDrawOptions* options);
 
     Camera& camera() { return m_camera; }
     const Camera& camera() const { return m_camera; }
     // Aims the camera at the movable bodies (all bodies if none move) on the next frame, when the
     // widget's size is known.
     void frameScene();
+    // Aims the camera at the selected bodies (the whole scene when nothing is selected).
+    void frameSelection();
+
+    // The world ray through a widget pixel (origin at the eye, unit direction).
+    std::pair<glm::vec3, glm::vec3> rayThrough(const QPointF& pixel) const;
+    // The closest body under a widget pixel, by World::castRay.
+    std::optional<simcore::WorldRayHit> pick(const QPointF& pixel) const;
+    // The scene body under a pixel, or -1 (nothing, or a body thrown in while running).
+    int sceneBodyAt(const QPointF& pixel) const;
+    // Where a new body of this size could go: the ground point under the view's centre, raised so
+    // the body clears the bodies already there (m).
+    glm::vec3 placementPoint(float bodyHalfHeight) const;
 
     // Renders a frame and returns it as an image (the viewport's framebuffer, resolved from MSAA).
     QImage grabViewport();
+    // Frames drawn during the last second.
+    int framesPerSecond() const { return static_cast<int>(m_frameTimes.size()); }
 
     // Colour a body is drawn with (linear RGB): the authored one, else a neutral grey for static
     // bodies and a palette colour picked by scene index for the others.
     static glm::vec3 displayColor(std::size_t sceneIndex, const std::optional<glm::vec3>& authored,
                                   simcore::MotionType motion);
 
-    // What the viewport's shaders need: GL 3.3 core, 24-bit depth, 4x MSAA. Set it as the default
-    // format before the application creates any window (see main()).
+    // What the viewport's shaders need: GL 3.3 core, 24-bit depth, stencil, 4x MSAA. Set it as the
+    // default format before the application creates any window (see main()).
     static QSurfaceFormat requiredSurfaceFormat();
 
     QSize sizeHint() const override { return {960, 640}; }
@@ -67,19 +99,35 @@ protected:
     void mouseMoveEvent(QMouseEvent* event) override;
     void mouseReleaseEvent(QMouseEvent* event) override;
     void wheelEvent(QWheelEvent* event) override;
+    void keyPressEvent(QKeyEvent* event) override;
+    void keyReleaseEvent(QKeyEvent* event) override;
+    void focusOutEvent(QFocusEvent* event) override;
 
 private:
     struct GpuMesh {
         unsigned vao = 0, vbo = 0, ibo = 0;
         int indexCount = 0;
+        // Keeps a hull alive while its address is part of a cache key, so the address cannot be
+        // reused by another hull.
+        std::shared_ptr<const simcore::ConvexHull> hull;
     };
     // Bodies with equal shapes share one mesh (a thousand cubes are one upload).
     using MeshKey = std::tuple<int, float, float, float, float, float, const void*>;
     struct BodyDraw {
         simcore::BodyId id;
+        int sceneIndex = -1;
         int mesh = -1;
         glm::vec3 color{1.0f};
+        glm::vec3 localCenter{0.0f};     // of the shape's local bounds (m), for the outline
+        glm::vec3 localHalfSize{0.5f};   // of the shape's local bounds (m)
     };
+    struct OverlayVertex {
+        glm::vec3 position;
+        glm::vec3 color;  // linear RGB
+    };
+
+    // Mouse gesture in progress.
+    enum class Drag { None, Orbit, Pan, Fly, MoveBodies, RotateBodies, Grab };
 
     void cleanup();
     void releaseMeshes();
@@ -88,10 +136,20 @@ private:
     void applyPendingFrame();
     void createShadowMap();
     void drawBodies(QOpenGLShaderProgram& program, bool shadowPass);
+    void drawSelectionOutline(const glm::mat4& viewProjection);
+    void drawOverlays(const glm::mat4& viewProjection);
+    std::vector<OverlayVertex> overlayLines() const;
     // Light-space box around the bodies worth shadowing.
     glm::mat4 lightViewProjection() const;
 
+    void pressOnBody(QMouseEvent* event, const simcore::WorldRayHit& hit, int sceneIndex);
+    void dragBodies(const QPointF& position);
+    std::optional<glm::vec3> dragPlanePoint(const QPointF& pixel) const;
+    void flyTick();
+
     SimulationController* m_simulation = nullptr;
+    SceneDocument* m_document = nullptr;
+    DebugDrawOptions* m_debugDraw = nullptr;
     Camera m_camera;
     bool m_framePending = true;
 
@@ -101,7 +159,10 @@ private:
     QOpenGLShaderProgram* m_shadowProgram = nullptr;
     QOpenGLShaderProgram* m_skyProgram = nullptr;
     QOpenGLShaderProgram* m_gridProgram = nullptr;
+    QOpenGLShaderProgram* m_flatProgram = nullptr;  // one colour per draw (selection outline)
+    QOpenGLShaderProgram* m_lineProgram = nullptr;  // per-vertex colour (overlays)
     unsigned m_emptyVao = 0;  // core profile needs a bound VAO even for attribute-less draws
+    unsigned m_overlayVao = 0, m_overlayVbo = 0;
     unsigned m_shadowFbo = 0;
     unsigned m_shadowTexture = 0;
     std::vector<GpuMesh> m_meshes;
@@ -109,10 +170,25 @@ private:
     std::vector<BodyDraw> m_draws;
     bool m_drawListDirty = true;
 
-    // Mouse gesture in progress.
-    enum class Drag { None, Orbit, Pan };
     Drag m_drag = Drag::None;
     QPoint m_lastMouse;
+    QPoint m_pressMouse;
+    bool m_dragMoved = false;           // the mouse travelled since the press (not a click)
+    int m_clickedBody = -1;             // scene body under the press, for click-to-select on release
+    Qt::KeyboardModifiers m_pressModifiers;
+    float m_dragPlaneHeight = 0.0f;     // y of the horizontal plane bodies move on (m)
+    glm::vec3 m_dragStart{0.0f};        // where the drag plane was first hit (m)
+    std::vector<simcore::SceneBody> m_dragStartBodies;  // the selection as it was at the press
+    QList<int> m_dragIndices;
+    bool m_dragPushed = false;          // the drag has pushed its first command (the rest merge)
+    float m_grabDepth = 0.0f;           // grab: distance along the view ray kept while dragging (m)
+
+    QSet<int> m_flyKeys;
+    QTimer m_flyTimer;
+    QElapsedTimer m_flyClock;
+
+    std::deque<qint64> m_frameTimes;  // ms timestamps of the frames of the last second
+    QElapsedTimer m_frameClock;
 };
 
 }  // namespace interplay

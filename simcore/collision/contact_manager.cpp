@@ -140,6 +140,11 @@ void ContactManager::removeContactsOf(std::uint32_t slot) {
     }
 }
 
+void ContactManager::removePair(std::uint32_t slotA, std::uint32_t slotB) {
+    const std::uint32_t index = pairToContact_.find(PairTable::key(slotA, slotB));
+    if (index != PairTable::kNotFound) removeAt(index);
+}
+
 void ContactManager::clear() {
     contacts_.clear();
     pairToContact_.clear();

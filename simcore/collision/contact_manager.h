@@ -45,6 +45,9 @@ public:
                          float timeStep);
 
     void removeContactsOf(std::uint32_t slot);
+    // Drops the contact of one pair of body slots, if there is one (a joint between them that
+    // turns their collision off).
+    void removePair(std::uint32_t slotA, std::uint32_t slotB);
     void clear();
 
     std::vector<Contact>& contacts() { return contacts_; }

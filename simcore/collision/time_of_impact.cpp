@@ -42,13 +42,15 @@ TimeOfImpact timeOfImpact(const Shape& a, const Sweep& sweepA, const Shape& b, c
     constexpr int kMaxIterations = 64;
     GjkCache cache;
     float fraction = 0.0f;
+    Vec3 normal(0.0f);
     for (int iteration = 0; iteration < kMaxIterations; ++iteration) {
         const GjkResult gjk = gjkDistance(a, sweepA.at(fraction), b, sweepB.at(fraction), &cache);
         if (!isFinite(gjk.distance) || !isFinite(gjk.normal)) return {};  // degenerate input: leave it to contacts
         if (gjk.overlap || gjk.distance <= target + tolerance) {
             if (fraction == 0.0f) return {TimeOfImpact::Outcome::InitiallyTouching, 0.0f};
-            return {TimeOfImpact::Outcome::Hit, fraction};
+            return {TimeOfImpact::Outcome::Hit, fraction, gjk.normal};
         }
+        normal = gjk.normal;
         const float approach = -glm::dot(relativeMotion, gjk.normal) + turning;
         if (approach <= 0.0f) return {};  // moving apart along the separating direction
         fraction += (gjk.distance - target) / approach;
@@ -56,7 +58,7 @@ TimeOfImpact timeOfImpact(const Shape& a, const Sweep& sweepA, const Shape& b, c
     }
     // Converging this slowly means grazing contact: report where the advance got to, which is
     // still before the first contact.
-    return {TimeOfImpact::Outcome::Hit, fraction};
+    return {TimeOfImpact::Outcome::Hit, fraction, normal};
 }
 
 }  // namespace simcore

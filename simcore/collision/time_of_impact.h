@@ -28,6 +28,7 @@ struct TimeOfImpact {
         InitiallyTouching // already within `target` at the start: contacts handle the pair
     } outcome = Outcome::Separated;
     float fraction = 1.0f;  // of the sweep, in [0, 1]
+    Vec3 normal{0.0f};      // on a hit: unit, from A to B at the time of impact
 };
 
 // `target` is the separation to stop at (> 0, so the shapes are still apart and the next step's

@@ -14,17 +14,6 @@ using simd::MaskW;
 using simd::SymMat3W;
 using simd::Vec3W;
 
-// Orthonormal tangents from a unit normal without branches on near-parallel axes (Duff et al.,
-// "Building an Orthonormal Basis, Revisited", 2017). Continuous in the normal, so warm-started
-// friction impulses stay meaningful from step to step.
-void tangentBasis(const Vec3& n, Vec3& t1, Vec3& t2) {
-    const float sign = std::copysign(1.0f, n.z);
-    const float a = -1.0f / (sign + n.z);
-    const float b = n.x * n.y * a;
-    t1 = Vec3(1.0f + sign * n.x * n.x * a, sign * b, -sign * n.x);
-    t2 = Vec3(b, sign + n.y * n.y * a, -n.y);
-}
-
 // Friction tangents. While the bodies slip, the first tangent follows the slip: each row then has
 // its own effective mass, and with axes at an angle to the slip the two rows' updates would not be
 // parallel to it, so the clamped friction would point off the slip direction and come out weak (3.6 %
@@ -43,7 +32,7 @@ void frictionAxes(const ContactManifold& manifold, const BodyStorage& bodies, st
         t1 = glm::normalize(slip);
         t2 = glm::cross(n, t1);
     } else {
-        tangentBasis(n, t1, t2);
+        orthonormalBasis(n, t1, t2);
     }
 }
 
@@ -177,18 +166,9 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const BodyStor
     usesFriction_ = false;
     usesRestitution_ = false;
 
-    // Soft contact as a mass-spring-damper solved implicitly (Catto, "Solver2D", 2024): stiffness
-    // from the frequency, capped at a quarter of the substep rate so the spring stays resolvable.
     const float h = params.substepDt;
-    const float hertz = std::min(params.solver.contactHertz, 0.25f / h);
-    const float omega = 2.0f * kPi * hertz;
-    const float zeta = params.solver.contactDampingRatio;
-    const float a1 = 2.0f * zeta + h * omega;
-    const float a2 = h * omega * a1;
-    const float a3 = 1.0f / (1.0f + a2);
-    biasRate_ = omega / a1;
-    massScale_ = a2 * a3;
-    impulseScale_ = a3;
+    soft_ = SoftConstraint::make(SoftConstraint::cappedHertz(params.solver.contactHertz, h),
+                                 params.solver.contactDampingRatio, h);
 
     // Solver bodies: entry 0 stands for every static body (zero velocity, never moves).
     references_.clear();
@@ -396,9 +376,9 @@ void ContactSolver::solve(BodyStorage& bodies, bool useBias) {
         correction.mode = Correction::Mode::Baumgarte;
     const float inverseH = 1.0f / params_.substepDt;
     correction.inverseH = FloatW::splat(inverseH);
-    correction.biasRate = FloatW::splat(biasRate_);
-    correction.massScale = FloatW::splat(massScale_);
-    correction.impulseScale = FloatW::splat(impulseScale_);
+    correction.biasRate = FloatW::splat(soft_.biasRate);
+    correction.massScale = FloatW::splat(soft_.massScale);
+    correction.impulseScale = FloatW::splat(soft_.impulseScale);
     correction.maxPush = FloatW::splat(-params_.solver.maxPushVelocity);
     correction.baumgarte = FloatW::splat(params_.solver.baumgarte * inverseH);
     correction.linearSlop = FloatW::splat(params_.contact.linearSlop);

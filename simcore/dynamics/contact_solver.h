@@ -14,6 +14,7 @@
 
 #include "simcore/collision/contact_manager.h"
 #include "simcore/dynamics/body_storage.h"
+#include "simcore/dynamics/constraint_math.h"
 #include "simcore/math/simd.h"
 #include "simcore/world/world_settings.h"
 
@@ -103,7 +104,7 @@ private:
     std::vector<std::uint32_t> order_;         // scratch: constraints sorted by colour
     std::vector<std::uint8_t> colorOf_;        // scratch
     Params params_;
-    float biasRate_ = 0.0f, massScale_ = 1.0f, impulseScale_ = 0.0f;  // soft-contact coefficients
+    SoftConstraint soft_;  // overlap correction of the position-correcting passes
     float maxPenetration_ = 0.0f;
     std::size_t constraintCount_ = 0, colorCount_ = 0;
     bool usesFriction_ = false;

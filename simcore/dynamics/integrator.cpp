@@ -1,13 +1,10 @@
 #include "simcore/dynamics/integrator.h"
 
+#include "simcore/dynamics/constraint_math.h"
+
 namespace simcore {
 
 namespace {
-
-Mat3 skew(const Vec3& v) {
-    // Column-major: skew(v) * x == cross(v, x).
-    return Mat3(0.0f, v.z, -v.y, -v.z, 0.0f, v.x, v.y, -v.x, 0.0f);
-}
 
 // Torque-free Euler equations I dw/dt + w x (I w) = 0 in body axes, by the implicit midpoint rule:
 // I (w1 - w0) + h wm x (I wm) = 0 with wm = (w0 + w1) / 2, solved by Newton's method from w1 = w0.

@@ -12,19 +12,29 @@ std::uint32_t Islands::find(std::uint32_t i) {
     return i;
 }
 
-void Islands::build(const BodyStorage& bodies, const std::vector<Contact>& contacts) {
+void Islands::unite(std::size_t a, std::size_t b) {
+    // The smaller index becomes the root, so islands do not depend on contact or joint order.
+    const std::uint32_t rootA = find(static_cast<std::uint32_t>(a));
+    const std::uint32_t rootB = find(static_cast<std::uint32_t>(b));
+    if (rootA < rootB) parent_[rootB] = rootA;
+    else if (rootB < rootA) parent_[rootA] = rootB;
+}
+
+void Islands::build(const BodyStorage& bodies, const std::vector<Contact>& contacts, const JointStorage& joints) {
     parent_.resize(bodies.size());
     std::iota(parent_.begin(), parent_.end(), 0u);
+    auto isDynamic = [&bodies](std::size_t i) { return bodies.motion[i] == MotionType::Dynamic; };
     for (const Contact& contact : contacts) {
         if (contact.manifold.pointCount == 0) continue;
         const std::size_t a = bodies.denseIndexOfSlot(contact.slotA);
         const std::size_t b = bodies.denseIndexOfSlot(contact.slotB);
-        if (bodies.motion[a] != MotionType::Dynamic || bodies.motion[b] != MotionType::Dynamic) continue;
-        const std::uint32_t rootA = find(static_cast<std::uint32_t>(a));
-        const std::uint32_t rootB = find(static_cast<std::uint32_t>(b));
-        // The smaller index becomes the root, so islands do not depend on contact order.
-        if (rootA < rootB) parent_[rootB] = rootA;
-        else if (rootB < rootA) parent_[rootA] = rootB;
+        if (isDynamic(a) && isDynamic(b)) unite(a, b);
+    }
+    for (const Joint& joint : joints.joints) {
+        if (!joint.bodyB.isValid()) continue;  // the world joins nothing
+        const auto a = static_cast<std::size_t>(bodies.denseIndex(joint.bodyA));
+        const auto b = static_cast<std::size_t>(bodies.denseIndex(joint.bodyB));
+        if (isDynamic(a) && isDynamic(b)) unite(a, b);
     }
 }
 

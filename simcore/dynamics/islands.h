@@ -1,10 +1,11 @@
 #pragma once
-// Islands: dynamic bodies connected through touching contacts (static and kinematic bodies do not
-// join islands, or the whole floor would be one island). An island sleeps only as a whole, and
-// wakes as a whole when any of its bodies is awake.
+// Islands: dynamic bodies connected through touching contacts and joints (static and kinematic
+// bodies, and the world, do not join islands, or the whole floor would be one island). An island
+// sleeps only as a whole, and wakes as a whole when any of its bodies is awake.
 
 #include "simcore/collision/contact_manager.h"
 #include "simcore/dynamics/body_storage.h"
+#include "simcore/dynamics/joint_storage.h"
 #include "simcore/world/world_settings.h"
 
 #include <algorithm>
@@ -15,8 +16,8 @@ namespace simcore {
 
 class Islands {
 public:
-    // Union-find over the touching contacts. Buffers are reused from step to step.
-    void build(const BodyStorage& bodies, const std::vector<Contact>& contacts);
+    // Union-find over the touching contacts and the joints. Buffers are reused from step to step.
+    void build(const BodyStorage& bodies, const std::vector<Contact>& contacts, const JointStorage& joints);
 
     // Wakes every sleeping body whose island holds an awake body, calling onWake(denseIndex) for
     // each, and counts the awake islands.
@@ -32,6 +33,7 @@ public:
 
 private:
     std::uint32_t find(std::uint32_t i);
+    void unite(std::size_t a, std::size_t b);  // dense indices; only dynamic bodies join
 
     std::vector<std::uint32_t> parent_;
     std::vector<std::uint8_t> islandAwake_;  // by root

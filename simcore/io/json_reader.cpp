@@ -1,8 +1,10 @@
 #include "simcore/io/json_reader.h"
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <utility>
 
 namespace simcore::io_detail {
@@ -29,7 +31,12 @@ public:
     bool number_integer(number_integer_t v) { return insert(v); }
     bool number_unsigned(number_unsigned_t v) { return insert(v); }
     bool number_float(number_float_t v, const string_t&) { return insert(v); }
-    bool string(string_t& v) { return insert(std::move(v)); }
+    bool string(string_t& v) {
+        if (v.size() > kMaxStringBytes)
+            return limitExceeded(nextPath(), "a string of " + std::to_string(v.size()) + " bytes is longer than the limit of " +
+                                                 std::to_string(kMaxStringBytes) + " bytes");
+        return insert(std::move(v));
+    }
     bool binary(binary_t& v) { return insert(Json::binary(static_cast<const binary_t::container_type&>(v))); }
 
     bool start_object(std::size_t) { return open(Json::object()); }
@@ -38,6 +45,9 @@ public:
     bool end_array() { return close(); }
 
     bool key(string_t& k) {
+        if (k.size() > kMaxStringBytes)
+            return limitExceeded(currentPath(), "a key of " + std::to_string(k.size()) + " bytes is longer than the limit of " +
+                                                    std::to_string(kMaxStringBytes) + " bytes");
         if (stack_.back()->contains(k)) {
             Diagnostic d;
             d.severity = Diagnostic::Severity::Warning;
@@ -105,6 +115,41 @@ private:
         return path;
     }
 
+    // Refuses the document for exceeding one of the parse-time limits (see json_reader.h): an error
+    // at `path`, and parsing stops.
+    bool limitExceeded(const std::string& path, std::string message) {
+        Diagnostic d;
+        d.file = file_;
+        d.path = path;
+        d.message = std::move(message);
+        out_.push_back(std::move(d));
+        failed_ = true;
+        return false;
+    }
+
+    // The pointer of the value about to be placed.
+    std::string nextPath() const {
+        if (stack_.empty()) return {};
+        const Json& parent = *stack_.back();
+        return parent.is_array() ? childPath(currentPath(), parent.size()) : childPath(currentPath(), key_);
+    }
+
+    // Counts a value about to be placed against the size limits.
+    bool admit() {
+        if (++values_ > kMaxJsonValues)
+            return limitExceeded({}, "the document has more than " + std::to_string(kMaxJsonValues) +
+                                         " values (numbers, strings, arrays, objects); that is beyond any scene this "
+                                         "program accepts");
+        if (!stack_.empty() && stack_.back()->is_array() && stack_.back()->size() >= kMaxArrayElements) {
+            const std::string path = currentPath();
+            std::string message = "the array has more than " + std::to_string(kMaxArrayElements) + " elements";
+            if (path == "/bodies" || path == "/objects")
+                message += "; a scene may have at most " + std::to_string(limits::kMaxBodies) + " bodies";
+            return limitExceeded(path, std::move(message));
+        }
+        return true;
+    }
+
     // Places a value in the current container and returns it (or the root).
     Json* place(Json&& value, std::string& segment) {
         if (stack_.empty()) {
@@ -124,6 +169,7 @@ private:
     }
 
     bool insert(Json&& value) {
+        if (!admit()) return false;
         std::string segment;
         place(std::move(value), segment);
         return true;
@@ -138,6 +184,7 @@ private:
             failed_ = true;
             return false;
         }
+        if (!admit()) return false;
         std::string segment;
         stack_.push_back(place(std::move(container), segment));
         segments_.push_back(std::move(segment));
@@ -157,6 +204,7 @@ private:
     std::vector<Json*> stack_;
     std::vector<std::string> segments_;  // segments_[i]: the pointer segment of stack_[i] in its parent
     std::string key_;
+    std::size_t values_ = 0;
     bool failed_ = false;
 };
 
@@ -180,9 +228,19 @@ std::string labelFromPath(const std::string& path) {
     const bool isIndex = !tail.empty() && std::all_of(tail.begin(), tail.end(), [](char c) { return c >= '0' && c <= '9'; });
     const bool isAxis = tail == "x" || tail == "y" || tail == "z";  // thesis vectors: say "scale.y"
     if ((isIndex || isAxis) && last > 0) {
-        const std::size_t previous = path.rfind('/', last - 1);
-        const std::string_view parent = std::string_view(path).substr(previous + 1, last - previous - 1);
-        return isIndex ? unescape(parent) + "[" + std::string(tail) + "]" : unescape(parent) + "." + std::string(tail);
+        std::size_t end = last;
+        std::size_t previous = path.rfind('/', end - 1);
+        std::string_view parent = std::string_view(path).substr(previous + 1, end - previous - 1);
+        std::string suffix = isIndex ? "[" + std::string(tail) + "]" : "." + std::string(tail);
+        // Nested indices, as in hull points: "points[3][2]", not "3[2]".
+        while (previous != std::string::npos && previous > 0 && !parent.empty() &&
+               std::all_of(parent.begin(), parent.end(), [](char c) { return c >= '0' && c <= '9'; })) {
+            suffix = "[" + std::string(parent) + "]" + suffix;
+            end = previous;
+            previous = path.rfind('/', end - 1);
+            parent = std::string_view(path).substr(previous + 1, end - previous - 1);
+        }
+        return unescape(parent) + suffix;
     }
     return unescape(tail);
 }
@@ -190,6 +248,13 @@ std::string labelFromPath(const std::string& path) {
 }  // namespace
 
 std::optional<Json> parseJson(std::string_view text, const std::string& file, std::vector<Diagnostic>& out) {
+    if (text.size() > kMaxTextBytes) {
+        Diagnostic d;
+        d.file = file;
+        d.message = "the file is larger than " + std::to_string(kMaxTextBytes >> 20) + " MiB; it is not a scene";
+        out.push_back(std::move(d));
+        return std::nullopt;
+    }
     DomBuilder builder(text, file, out);
     const bool ok = Json::sax_parse(text.begin(), text.end(), &builder, nlohmann::detail::input_format_t::json,
                                     /*strict=*/true, /*ignore_comments=*/false);
@@ -488,6 +553,67 @@ std::optional<Quat> normalisedOrientation(Reader& reader, const Quat& q, const s
     const double inv = 1.0 / length;
     return Quat(static_cast<float>(q.w * inv), static_cast<float>(q.x * inv), static_cast<float>(q.y * inv),
                 static_cast<float>(q.z * inv));
+}
+
+namespace {
+
+// Eigenvalues of a symmetric 3x3 matrix, smallest first (the closed form by the trigonometric
+// method, in double; exact enough to compare against a limit spanning orders of magnitude).
+std::array<double, 3> symmetricEigenvalues(const Mat3& m) {
+    const double a00 = m[0][0], a11 = m[1][1], a22 = m[2][2];
+    const double a01 = 0.5 * (double(m[0][1]) + m[1][0]), a02 = 0.5 * (double(m[0][2]) + m[2][0]),
+                 a12 = 0.5 * (double(m[1][2]) + m[2][1]);
+    const double offDiagonal = a01 * a01 + a02 * a02 + a12 * a12;
+    std::array<double, 3> e{a00, a11, a22};
+    if (offDiagonal > 0.0) {
+        const double q = (a00 + a11 + a22) / 3.0;
+        const double b00 = a00 - q, b11 = a11 - q, b22 = a22 - q;
+        const double p = std::sqrt((b00 * b00 + b11 * b11 + b22 * b22 + 2.0 * offDiagonal) / 6.0);
+        const double det = b00 * (b11 * b22 - a12 * a12) - a01 * (a01 * b22 - a12 * a02) + a02 * (a01 * a12 - b11 * a02);
+        const double r = std::clamp(det / (2.0 * p * p * p), -1.0, 1.0);
+        const double phi = std::acos(r) / 3.0;
+        const double third = 2.0943951023931954923;  // 2 pi / 3
+        e[0] = q + 2.0 * p * std::cos(phi);
+        e[2] = q + 2.0 * p * std::cos(phi + third);
+        e[1] = 3.0 * q - e[0] - e[2];
+    }
+    std::sort(e.begin(), e.end());
+    return e;
+}
+
+}  // namespace
+
+// Four significant digits (8e-09, 4.189e+21): for derived values, which no one typed in.
+std::string approx(double value) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.4g", value);
+    return buffer;
+}
+
+bool checkMassProperties(Reader& reader, const BodyCreationSettings& body, const std::string& path) {
+    if (body.motion != MotionType::Dynamic) return true;
+    const MassProperties props = body.mass ? massPropertiesForMass(body.shape, *body.mass)
+                                           : massProperties(body.shape, body.density);
+    if (!body.mass) {
+        const double mass = double(body.density) * double(volume(body.shape));
+        if (!(mass >= limits::kMass.min && mass <= limits::kMass.max)) {
+            reader.error(path, "density " + formatNumber(body.density) + limits::kDensity.unit + " gives this " +
+                                   std::string(shapeTypeName(body.shape.type)) + " a mass of " + approx(mass) +
+                                   " kg; the mass must be between " + formatNumber(limits::kMass.min) + " and " +
+                                   formatNumber(limits::kMass.max) + " kg (give another density, or a mass)");
+            return false;
+        }
+    }
+    const double smallest = symmetricEigenvalues(props.inertia)[0];
+    if (!(smallest >= limits::kMinMomentOfInertia)) {
+        reader.error(path, "the smallest moment of inertia of this body, " + approx(smallest) + " kg m^2 (from its mass " +
+                               approx(props.mass) + " kg and its shape), is below " +
+                               formatNumber(limits::kMinMomentOfInertia) +
+                               " kg m^2: a body this small and light cannot be rotated reliably in float arithmetic "
+                               "(make it larger or heavier)");
+        return false;
+    }
+    return true;
 }
 
 std::optional<Shape> hullShape(Reader& reader, const std::vector<Vec3>& points, const std::string& path) {

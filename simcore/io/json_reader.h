@@ -26,6 +26,20 @@ constexpr std::size_t kMaxDiagnostics = 100;
 // Deeper nesting than this is refused: no scene needs it, and it bounds memory and time.
 constexpr int kMaxNestingDepth = 64;
 
+// Limits enforced while the text is parsed, before any of it is interpreted, so that memory stays
+// bounded whatever the file holds (the text itself is limited to kMaxTextBytes):
+//  - a string (value or key) longer than kMaxStringBytes is refused: names and keys are short,
+//    and every message that quotes a string stays readable;
+//  - an array of more than kMaxArrayElements elements is refused (the body limit: no other array
+//    of a scene comes near it);
+//  - a document of more than kMaxJsonValues values (numbers, strings, objects, ... counted one
+//    each) is refused: enough for kMaxArrayElements fully written bodies, and it caps the parsed
+//    document at a few hundred MB.
+constexpr std::size_t kMaxTextBytes = 64u * 1024u * 1024u;
+constexpr std::size_t kMaxStringBytes = 4096;
+constexpr std::size_t kMaxArrayElements = 100000;
+constexpr std::size_t kMaxJsonValues = 4000000;
+
 // Parses `text` as strict JSON (no comments, no NaN/Infinity). Syntax errors become an error with
 // 1-based line and byte column; duplicate object keys become warnings (the last value is used, as
 // in most JSON readers, but the loss is reported). Returns nothing on a syntax error.
@@ -141,11 +155,23 @@ inline constexpr int kMinSubsteps = 1, kMaxSubsteps = 64;
 inline constexpr int kMinVelocityIterations = 1, kMaxVelocityIterations = 1000;
 inline constexpr int kMinPositionIterations = 0, kMaxPositionIterations = 1000;
 inline constexpr std::size_t kMaxHullPoints = 4096;
+inline constexpr std::size_t kMaxBodies = kMaxArrayElements;
+// Smallest principal moment of inertia of a dynamic body, from its shape and mass. Below it the
+// engine's float arithmetic underflows (the inertia tensor's determinant, the product of the
+// moments, becomes denormal or zero): a 0.2 mm, 1 mg box would get a non-finite orientation in its
+// first step. (No upper limit is needed: the mass and size limits keep every moment below 7e18.)
+inline constexpr double kMinMomentOfInertia = 1e-12;  // kg m^2
 }  // namespace limits
 
 // Quaternion from the JSON orientation value; reported at `path` when it cannot be normalised.
 // Shared so thesis import and v1 agree on what a usable rotation is.
 std::optional<Quat> normalisedOrientation(Reader& reader, const Quat& q, const std::string& path);
+
+// What a dynamic body's mass and shape come to, which no single value in the file shows: the mass
+// a density gives (density x volume, against limits::kMass) and the smallest principal moment of
+// inertia (against limits::kMinMomentOfInertia). Reported at `path` (the body); returns false when refused. Static
+// and kinematic bodies have no mass in the simulation and always pass.
+bool checkMassProperties(Reader& reader, const BodyCreationSettings& body, const std::string& path);
 
 // Builds the hull shape of `points`, reporting a failure at `path`.
 std::optional<Shape> hullShape(Reader& reader, const std::vector<Vec3>& points, const std::string& path);

@@ -6,7 +6,7 @@
 namespace simcore {
 
 BuiltWorld buildWorld(const Scene& scene) {
-    BuiltWorld built{World(scene.settings), {}};
+    BuiltWorld built{World(scene.settings), {}, {}};
     built.bodyIds.reserve(scene.bodies.size());
     for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
         const BodyCreationSettings& body = scene.bodies[i].body;
@@ -15,6 +15,20 @@ BuiltWorld buildWorld(const Scene& scene) {
         } catch (const std::invalid_argument& e) {
             // Name the body: the world's message only names the field.
             throw std::invalid_argument("body " + std::to_string(i) + " ('" + body.name + "'): " + e.what());
+        }
+    }
+    built.jointIds.reserve(scene.joints.size());
+    for (std::size_t i = 0; i < scene.joints.size(); ++i) {
+        const SceneJoint& joint = scene.joints[i];
+        JointCreationSettings settings = joint.joint;
+        try {
+            if (joint.bodyA >= built.bodyIds.size() || (joint.bodyB && *joint.bodyB >= built.bodyIds.size()))
+                throw std::invalid_argument("a body index is out of range");
+            settings.bodyA = built.bodyIds[joint.bodyA];
+            settings.bodyB = joint.bodyB ? built.bodyIds[*joint.bodyB] : BodyId{};
+            built.jointIds.push_back(built.world.createJoint(settings));
+        } catch (const std::invalid_argument& e) {
+            throw std::invalid_argument("joint " + std::to_string(i) + " ('" + settings.name + "'): " + e.what());
         }
     }
     return built;

@@ -16,20 +16,39 @@
 //    correction off); damping rates in [0, 1000] 1/s; sleep speeds in [0, 1000]; timeToSleep in
 //    [0, 1e6] s. Every settings key is optional (defaults from WorldSettings).
 //  - convex hulls: 4..4096 points, and ConvexHull::build must succeed.
+//  - what a dynamic body's values come to together (both formats): the mass a density gives
+//    (density x volume) in [1e-6, 1e9] kg like a given mass; the smallest principal moment of
+//    inertia at least 1e-12 kg m^2 (below it float arithmetic fails: a 0.2 mm, 1 mg box would get
+//    a NaN orientation in its first step).
+//  - size (json_reader.h, checked while parsing, so memory stays bounded): text up to 64 MiB;
+//    nesting depth 64; strings and keys up to 4096 bytes; arrays up to 100000 elements (so at
+//    most 100000 bodies); at most 4 million JSON values in all.
 //  - unknown keys are warnings: the scene loads, the key is reported and dropped.
 //  - static and kinematic bodies may carry mass or density: the value is validated and kept (so
 //    switching such a body to dynamic in the editor, or saving it, does not lose it), but the
 //    world ignores it. No warning, since nothing is lost.
 //  - a body without a name is called "body <index>".
-//  - "joints" must be an array; joints are not part of the engine yet, so a non-empty array is an
-//    error rather than a scene that silently behaves differently from what the file says.
+//  - joints: "type" (ball, hinge, slider, fixed, distance), "bodyA" (a body's name) and "anchor"
+//    are required; "bodyB" is a body's name, or null / absent for the world, and not bodyA; a
+//    name a joint uses must belong to exactly one body. Hinges and sliders require "axis" (not
+//    zero) and take "limits" {lower, upper} (lower <= upper; a hinge's within [-pi, pi] rad) and
+//    "motor" {speed, maxTorque} (hinge) / {speed, maxForce} (slider); distance joints require
+//    "anchorB" (at least 0.1 mm from anchor) and take "spring" {hertz > 0, dampingRatio},
+//    "minLength", "maxLength" (in [0, 1e6] m, min <= max once defaulted, see joint.h). Anchors and
+//    axes are world coordinates within +-1e6; motor speeds within +-1e4, forces in [0, 1e12].
+//    Keys a joint type does not take are warnings, like unknown keys.
+//  - settings.joint: hertz in (0, 1e4] Hz, dampingRatio in [0, 1e4].
+//  - settings.preset: "fast", "balanced" or "accurate" (quality_preset.h), applied before every other
+//    settings key, which then override it. Saving writes it when the settings match a preset.
 
 #include "simcore/io/scene_io.h"
 
 #include "simcore/io/json_reader.h"
+#include "simcore/world/quality_preset.h"
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -49,13 +68,24 @@ namespace {
 
 constexpr const char* kFormatTag = "interplay.scene";
 constexpr int kFormatVersion = 1;
-constexpr std::uintmax_t kMaxFileBytes = 64u * 1024u * 1024u;  // far beyond any real scene
+constexpr std::uintmax_t kMaxFileBytes = io_detail::kMaxTextBytes;  // far beyond any real scene
 
 // ---- reading ----
 
 void readSettings(Reader& r, const Json& s, const std::string& path, WorldSettings& out) {
     if (!r.expectObject(s, path)) return;
-    r.checkKeys(s, path, {"gravity", "timeStep", "substeps", "solver", "contact", "damping", "sleep", "effects"});
+    r.checkKeys(s, path,
+                {"preset", "gravity", "timeStep", "substeps", "solver", "contact", "joint", "damping", "sleep", "effects"});
+    // The preset first, so that the explicit keys read below override its values.
+    if (const Json* preset = Reader::find(s, "preset")) {
+        const std::string p = childPath(path, "preset");
+        if (const auto name = r.readString(*preset, p)) {
+            if (const auto parsed = parseQualityPreset(*name))
+                applyQualityPreset(out, *parsed);
+            else
+                r.error(p, "unknown quality preset '" + *name + "' (expected fast, balanced or accurate)");
+        }
+    }
     r.optionalVec3(s, path, "gravity", limits::kGravity, out.gravity);
     r.optionalFloat(s, path, "timeStep", limits::kTimeStep, out.timeStep);
     r.optionalInt(s, path, "substeps", limits::kMinSubsteps, limits::kMaxSubsteps, out.substeps);
@@ -94,6 +124,14 @@ void readSettings(Reader& r, const Json& s, const std::string& path, WorldSettin
             r.optionalFloat(*contact, p, "linearSlop", limits::kContactDistance, out.contact.linearSlop);
             r.optionalFloat(*contact, p, "restitutionThreshold", limits::kRestitutionThreshold,
                             out.contact.restitutionThreshold);
+        }
+    }
+    if (const Json* joint = Reader::find(s, "joint")) {
+        const std::string p = childPath(path, "joint");
+        if (r.expectObject(*joint, p)) {
+            r.checkKeys(*joint, p, {"hertz", "dampingRatio"});
+            r.optionalFloat(*joint, p, "hertz", limits::kContactHertz, out.joint.hertz);
+            r.optionalFloat(*joint, p, "dampingRatio", limits::kDampingRatio, out.joint.dampingRatio);
         }
     }
     if (const Json* damping = Reader::find(s, "damping")) {
@@ -252,6 +290,163 @@ std::optional<SceneBody> readBody(Reader& r, const Json& b, const std::string& p
     return out;
 }
 
+// Joint ranges (the rest are shared with bodies and settings in json_reader.h).
+constexpr io_detail::Range kHingeAngle{-static_cast<double>(kPi), static_cast<double>(kPi), false, " rad"};
+constexpr io_detail::Range kMotorForce{0.0, 1e12, false};
+constexpr io_detail::Range kJointLength{0.0, 1e6, false, " m"};
+
+// Reads a required number into `target`; false (and reported) when missing or invalid.
+bool requiredFloat(Reader& r, const Json& object, const std::string& path, std::string_view key,
+                   const io_detail::Range& range, float& target) {
+    const Json* value = r.require(object, path, key);
+    return value && r.optionalFloat(object, path, key, range, target);
+}
+
+const char* motorForceKey(JointType type) { return type == JointType::Hinge ? "maxTorque" : "maxForce"; }
+
+// Body names as the file gives them (index order, the loader's default for a nameless body), so
+// joints resolve against the file even when a body failed to load.
+std::vector<std::string> bodyNames(const Json& bodies) {
+    std::vector<std::string> names;
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+        const Json* name = bodies[i].is_object() ? Reader::find(bodies[i], "name") : nullptr;
+        names.push_back(name && name->is_string() ? name->get<std::string>() : "body " + std::to_string(i));
+    }
+    return names;
+}
+
+// The index of the one body called `name`, or an error at `path`.
+std::optional<std::size_t> findBody(Reader& r, const Json& value, const std::string& path,
+                                    const std::vector<std::string>& names) {
+    const auto name = r.readString(value, path);
+    if (!name) return std::nullopt;
+    const auto count = std::count(names.begin(), names.end(), *name);
+    if (count == 0) {
+        r.error(path, "no body named \"" + *name + "\"");
+        return std::nullopt;
+    }
+    if (count > 1) {
+        r.error(path, std::to_string(count) + " bodies are named \"" + *name + "\"; a joint needs a unique name");
+        return std::nullopt;
+    }
+    return static_cast<std::size_t>(std::find(names.begin(), names.end(), *name) - names.begin());
+}
+
+std::optional<SceneJoint> readJoint(Reader& r, const Json& j, const std::string& path, std::size_t index,
+                                    const std::vector<std::string>& names) {
+    if (!r.expectObject(j, path)) return std::nullopt;
+    const int errorsBefore = r.errorCount();
+    SceneJoint out;
+    JointCreationSettings& s = out.joint;
+
+    const Json* typeValue = r.require(j, path, "type");
+    const auto type = typeValue ? r.readString(*typeValue, childPath(path, "type")) : std::nullopt;
+    if (!type) return std::nullopt;
+    const JointType types[] = {JointType::Ball, JointType::Hinge, JointType::Slider, JointType::Fixed, JointType::Distance};
+    const auto known = std::find_if(std::begin(types), std::end(types), [&](JointType t) { return *type == jointTypeName(t); });
+    if (known == std::end(types)) {
+        r.error(childPath(path, "type"), "unknown joint type '" + *type + "' (expected ball, hinge, slider, fixed or distance)");
+        return std::nullopt;
+    }
+    s.type = *known;
+    const bool hingeOrSlider = s.type == JointType::Hinge || s.type == JointType::Slider;
+    const bool distance = s.type == JointType::Distance;
+
+    std::vector<std::string_view> keys{"name", "type", "bodyA", "bodyB", "anchor", "collideConnected"};
+    if (hingeOrSlider) keys.insert(keys.end(), {"axis", "limits", "motor"});
+    if (distance) keys.insert(keys.end(), {"anchorB", "spring", "minLength", "maxLength"});
+    r.checkKeys(j, path, keys, "for a " + *type + " joint");
+
+    s.name = "joint " + std::to_string(index);
+    if (const Json* name = Reader::find(j, "name"))
+        if (auto text = r.readString(*name, childPath(path, "name"))) s.name = std::move(*text);
+
+    if (const Json* bodyA = r.require(j, path, "bodyA"))
+        if (const auto a = findBody(r, *bodyA, childPath(path, "bodyA"), names)) out.bodyA = *a;
+    if (const Json* bodyB = Reader::find(j, "bodyB"); bodyB && !bodyB->is_null()) {
+        const std::string p = childPath(path, "bodyB");
+        if (const auto b = findBody(r, *bodyB, p, names)) {
+            out.bodyB = *b;
+            if (*b == out.bodyA) r.error(p, "bodyB names the same body as bodyA (leave it out to join bodyA to the world)");
+        }
+    }
+
+    if (const Json* anchor = r.require(j, path, "anchor"))
+        if (const auto v = r.readVec3(*anchor, childPath(path, "anchor"), limits::kCoordinate)) s.anchor = *v;
+    r.optionalBool(j, path, "collideConnected", s.collideConnected);
+
+    if (hingeOrSlider) {
+        const std::string p = childPath(path, "axis");
+        if (const Json* axis = r.require(j, path, "axis")) {
+            if (const auto v = r.readVec3(*axis, p, limits::kCoordinate)) {
+                if (glm::length(*v) > 1e-6f) s.axis = *v;
+                else r.error(p, "axis must not be zero");
+            }
+        }
+        if (const Json* value = Reader::find(j, "limits")) {
+            const std::string lp = childPath(path, "limits");
+            if (r.expectObject(*value, lp)) {
+                r.checkKeys(*value, lp, {"lower", "upper"});
+                const io_detail::Range& range = s.type == JointType::Hinge ? kHingeAngle : limits::kCoordinate;
+                JointLimits l;
+                const bool lowerRead = requiredFloat(r, *value, lp, "lower", range, l.lower);
+                if (requiredFloat(r, *value, lp, "upper", range, l.upper) && lowerRead) {
+                    if (l.lower > l.upper)
+                        r.error(lp, "lower (" + io_detail::formatNumber(l.lower) + ") exceeds upper (" +
+                                        io_detail::formatNumber(l.upper) + ")");
+                    else
+                        s.limits = l;
+                }
+            }
+        }
+        if (const Json* value = Reader::find(j, "motor")) {
+            const std::string mp = childPath(path, "motor");
+            if (r.expectObject(*value, mp)) {
+                const char* forceKey = motorForceKey(s.type);
+                r.checkKeys(*value, mp, {"speed", forceKey});
+                const io_detail::Range& speedRange = s.type == JointType::Hinge ? limits::kAngularSpeed : limits::kLinearSpeed;
+                JointMotor m;
+                const bool speedRead = requiredFloat(r, *value, mp, "speed", speedRange, m.speed);
+                if (requiredFloat(r, *value, mp, forceKey, kMotorForce, m.maxForce) && speedRead) s.motor = m;
+            }
+        }
+    }
+
+    if (distance) {
+        const std::string p = childPath(path, "anchorB");
+        if (const Json* anchorB = r.require(j, path, "anchorB")) {
+            if (const auto v = r.readVec3(*anchorB, p, limits::kCoordinate)) {
+                s.anchorB = *v;
+                if (glm::length(s.anchorB - s.anchor) < 1e-4f) r.error(p, "anchorB must be at least 0.1 mm from anchor");
+            }
+        }
+        if (const Json* value = Reader::find(j, "spring")) {
+            const std::string sp = childPath(path, "spring");
+            if (r.expectObject(*value, sp)) {
+                r.checkKeys(*value, sp, {"hertz", "dampingRatio"});
+                JointSpring spring;
+                const bool hertzRead = requiredFloat(r, *value, sp, "hertz", limits::kContactHertz, spring.hertz);
+                if (r.optionalFloat(*value, sp, "dampingRatio", limits::kDampingRatio, spring.dampingRatio) && hertzRead)
+                    s.spring = spring;
+            }
+        }
+        float length = 0.0f;
+        if (Reader::find(j, "minLength") && r.optionalFloat(j, path, "minLength", kJointLength, length)) s.minLength = length;
+        if (Reader::find(j, "maxLength") && r.optionalFloat(j, path, "maxLength", kJointLength, length)) s.maxLength = length;
+        if (r.errorCount() == errorsBefore) {
+            const DistanceLengths lengths = distanceLengths(s);
+            if (lengths.min > lengths.max)
+                r.error(childPath(path, s.minLength ? "minLength" : "maxLength"),
+                        "minLength (" + io_detail::formatNumber(lengths.min) + ") exceeds maxLength (" +
+                            io_detail::formatNumber(lengths.max) + "); unset, each is the rest length " +
+                            io_detail::formatNumber(lengths.rest));
+        }
+    }
+
+    if (r.errorCount() > errorsBefore) return std::nullopt;
+    return out;
+}
+
 std::optional<Scene> readV1(const Json& root, Reader& r) {
     r.checkKeys(root, "", {"format", "version", "settings", "bodies", "joints"});
 
@@ -285,15 +480,21 @@ std::optional<Scene> readV1(const Json& root, Reader& r) {
     Scene scene;
     if (const Json* settings = Reader::find(root, "settings")) readSettings(r, *settings, "/settings", scene.settings);
 
+    std::vector<std::string> names;
     if (const Json* bodies = r.require(root, "", "bodies"); bodies && r.expectArray(*bodies, "/bodies")) {
         scene.bodies.reserve(bodies->size());
         for (std::size_t i = 0; i < bodies->size() && !r.full(); ++i) {
             if (auto body = readBody(r, (*bodies)[i], childPath("/bodies", i), i)) scene.bodies.push_back(std::move(*body));
         }
+        names = bodyNames(*bodies);
     }
 
     if (const Json* joints = Reader::find(root, "joints"); joints && r.expectArray(*joints, "/joints")) {
-        if (!joints->empty()) r.error("/joints/0", "joints are not supported by this version yet");
+        scene.joints.reserve(joints->size());
+        for (std::size_t i = 0; i < joints->size() && !r.full(); ++i) {
+            if (auto joint = readJoint(r, (*joints)[i], childPath("/joints", i), i, names))
+                scene.joints.push_back(std::move(*joint));
+        }
     }
 
     if (r.errorCount() > 0) return std::nullopt;
@@ -321,6 +522,8 @@ OrderedJson vec3(const Vec3& v) { return OrderedJson::array({number(v.x), number
 
 OrderedJson settingsJson(const WorldSettings& s) {
     OrderedJson j = OrderedJson::object();
+    // Only a label: every value it sets is written below too, so loading gives the same numbers.
+    if (const auto preset = matchingQualityPreset(s)) j["preset"] = std::string(qualityPresetName(*preset));
     j["gravity"] = vec3(s.gravity);
     j["timeStep"] = number(s.timeStep);
     j["substeps"] = s.substeps;
@@ -334,6 +537,7 @@ OrderedJson settingsJson(const WorldSettings& s) {
     j["contact"] = {{"speculativeDistance", number(s.contact.speculativeDistance)},
                     {"linearSlop", number(s.contact.linearSlop)},
                     {"restitutionThreshold", number(s.contact.restitutionThreshold)}};
+    j["joint"] = {{"hertz", number(s.joint.hertz)}, {"dampingRatio", number(s.joint.dampingRatio)}};
     j["damping"] = {{"linear", number(s.damping.linear)}, {"angular", number(s.damping.angular)}};
     j["sleep"] = {{"enabled", s.sleep.enabled},
                   {"linearVelocity", number(s.sleep.linearVelocity)},
@@ -396,6 +600,29 @@ OrderedJson bodyJson(const SceneBody& sb) {
     j["restitution"] = number(b.restitution);
     j["ccd"] = b.ccd;
     if (sb.color) j["color"] = vec3(*sb.color);
+    return j;
+}
+
+OrderedJson jointJson(const SceneJoint& sj, const std::vector<SceneBody>& bodies) {
+    const JointCreationSettings& s = sj.joint;
+    OrderedJson j = OrderedJson::object();
+    j["name"] = s.name;
+    j["type"] = std::string(jointTypeName(s.type));
+    j["bodyA"] = bodies[sj.bodyA].body.name;
+    j["bodyB"] = sj.bodyB ? OrderedJson(bodies[*sj.bodyB].body.name) : OrderedJson(nullptr);
+    j["anchor"] = vec3(s.anchor);
+    if (s.type == JointType::Distance) j["anchorB"] = vec3(s.anchorB);
+    if (s.type == JointType::Hinge || s.type == JointType::Slider) {
+        j["axis"] = vec3(s.axis);
+        if (s.limits) j["limits"] = {{"lower", number(s.limits->lower)}, {"upper", number(s.limits->upper)}};
+        if (s.motor) j["motor"] = {{"speed", number(s.motor->speed)}, {motorForceKey(s.type), number(s.motor->maxForce)}};
+    }
+    if (s.type == JointType::Distance) {
+        if (s.spring) j["spring"] = {{"hertz", number(s.spring->hertz)}, {"dampingRatio", number(s.spring->dampingRatio)}};
+        if (s.minLength) j["minLength"] = number(*s.minLength);
+        if (s.maxLength) j["maxLength"] = number(*s.maxLength);
+    }
+    j["collideConnected"] = s.collideConnected;
     return j;
 }
 
@@ -467,14 +694,20 @@ SceneLoadResult parseScene(std::string_view text, std::string_view fileName) {
 
     Reader reader(file, result.diagnostics);
     std::optional<Scene> scene;
+    std::string bodiesPath = "/bodies";
     if (!root->is_object()) {
         reader.error("", "expected a JSON object at the top level, got " + io_detail::typeName(*root));
     } else if (!Reader::find(*root, "format") && Reader::find(*root, "objects")) {
         // The thesis app's files have no format tag; their "objects" list identifies them.
         scene = io_detail::importThesisScene(*root, reader);
+        bodiesPath = "/objects";
     } else {
         scene = readV1(*root, reader);
     }
+    // Limits on what the values of a body come to together (mass from density, inertia), which
+    // no single value shows: the same for both formats.
+    for (std::size_t i = 0; scene && i < scene->bodies.size() && !reader.full(); ++i)
+        io_detail::checkMassProperties(reader, scene->bodies[i].body, childPath(bodiesPath, i));
     reader.finish();
     if (reader.errorCount() == 0 && scene) result.scene = std::move(scene);
     return result;
@@ -523,7 +756,9 @@ std::string serializeScene(const Scene& scene) {
     OrderedJson bodies = OrderedJson::array();
     for (const SceneBody& b : scene.bodies) bodies.push_back(bodyJson(b));
     root["bodies"] = std::move(bodies);
-    root["joints"] = OrderedJson::array();
+    OrderedJson joints = OrderedJson::array();
+    for (const SceneJoint& j : scene.joints) joints.push_back(jointJson(j, scene.bodies));
+    root["joints"] = std::move(joints);
     std::string out;
     writeJson(out, root, 0);
     out += '\n';
@@ -584,6 +819,17 @@ std::optional<std::string> applySettingOverride(Scene& scene, std::string_view a
         return "expected key=value (for example solver.velocityIterations=20), got '" + std::string(assignment) + "'";
     const std::string key(assignment.substr(0, eq));
     const std::string valueText(assignment.substr(eq + 1));
+    if (key == "preset") {
+        // Applied now, over the current values, like the key in a file; later overrides win.
+        const Json quoted = Json::parse(valueText, nullptr, /*allow_exceptions=*/false);
+        const std::string name = quoted.is_string() ? quoted.get<std::string>() : valueText;
+        const std::optional<QualityPreset> preset = parseQualityPreset(name);
+        if (!preset)
+            return "invalid value for setting 'preset': unknown quality preset '" + name +
+                   "' (expected fast, balanced or accurate)";
+        applyQualityPreset(scene.settings, *preset);
+        return std::nullopt;
+    }
 
     // Work on the settings as they would be saved, so every key the file format has can be set,
     // and the new value goes through exactly the validation a file would.

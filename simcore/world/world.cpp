@@ -4,6 +4,7 @@
 #include "simcore/collision/time_of_impact.h"
 #include "simcore/dynamics/integrator.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -67,6 +68,47 @@ void validateSettings(const WorldSettings& s) {
             "sleep.angularVelocity must be finite and >= 0");
     require(isFinite(s.sleep.timeToSleep) && s.sleep.timeToSleep >= 0.0f,
             "sleep.timeToSleep must be finite and >= 0");
+    require(isPositiveFinite(s.joint.hertz), "joint.hertz must be a positive finite number");
+    require(isFinite(s.joint.dampingRatio) && s.joint.dampingRatio >= 0.0f, "joint.dampingRatio must be finite and >= 0");
+}
+
+// What can be checked without the bodies: numbers, and which options the type takes.
+void validateJoint(const JointCreationSettings& s) {
+    const bool hingeOrSlider = s.type == JointType::Hinge || s.type == JointType::Slider;
+    const bool distance = s.type == JointType::Distance;
+    require(isFinite(s.anchor), "anchor must be finite");
+    if (distance) {
+        require(isFinite(s.anchorB), "anchorB must be finite");
+        require(glm::length(s.anchorB - s.anchor) >= 1e-4f, "anchorB must be at least 0.1 mm from anchor");
+    }
+    if (hingeOrSlider) require(isFinite(s.axis) && glm::length(s.axis) > 1e-6f, "axis must be a finite, non-zero vector");
+    if (s.limits) {
+        require(hingeOrSlider, "limits apply to hinge and slider joints only");
+        require(isFinite(s.limits->lower) && isFinite(s.limits->upper), "limits must be finite");
+        require(s.limits->lower <= s.limits->upper, "limits.lower must not exceed limits.upper");
+        if (s.type == JointType::Hinge)
+            require(s.limits->lower >= -kPi && s.limits->upper <= kPi, "hinge limits must lie within [-pi, pi] rad");
+    }
+    if (s.motor) {
+        require(hingeOrSlider, "motor applies to hinge and slider joints only");
+        require(isFinite(s.motor->speed), "motor.speed must be finite");
+        require(isFinite(s.motor->maxForce) && s.motor->maxForce >= 0.0f, "motor.maxForce must be finite and >= 0");
+    }
+    if (s.spring) {
+        require(distance, "spring applies to distance joints only");
+        require(isPositiveFinite(s.spring->hertz), "spring.hertz must be a positive finite number");
+        require(isFinite(s.spring->dampingRatio) && s.spring->dampingRatio >= 0.0f,
+                "spring.dampingRatio must be finite and >= 0");
+    }
+    if (s.minLength || s.maxLength) {
+        require(distance, "minLength and maxLength apply to distance joints only");
+        require(!s.minLength || (isFinite(*s.minLength) && *s.minLength >= 0.0f), "minLength must be finite and >= 0");
+        require(!s.maxLength || (isFinite(*s.maxLength) && *s.maxLength >= 0.0f), "maxLength must be finite and >= 0");
+    }
+    if (distance) {
+        const DistanceLengths lengths = distanceLengths(s);
+        require(lengths.min <= lengths.max, "minLength must not exceed maxLength (unset, each is the rest length)");
+    }
 }
 
 }  // namespace
@@ -102,9 +144,75 @@ BodyId World::createBody(const BodyCreationSettings& settings) {
 
 void World::destroyBody(BodyId id) {
     const std::size_t i = indexOf(id);
+    for (std::size_t j = joints_.size(); j-- > 0;) {
+        const Joint& joint = joints_.joints[j];
+        if (joint.bodyA == id || joint.bodyB == id) destroyJoint(joints_.idAt(j));
+    }
     contactManager_.removeContactsOf(id.index);
     broadPhase_.removeProxy(bodies_.proxy[i]);
     bodies_.remove(id);
+}
+
+JointId World::createJoint(const JointCreationSettings& settings) {
+    validateJoint(settings);
+    require(contains(settings.bodyA), "bodyA is not a body of this world");
+    require(!settings.bodyB.isValid() || contains(settings.bodyB), "bodyB is not a body of this world");
+    require(!(settings.bodyA == settings.bodyB), "bodyB must differ from bodyA");
+    const JointId id = joints_.add(settings, bodies_);
+    wakeIndex(indexOf(settings.bodyA));
+    if (settings.bodyB.isValid()) {
+        wakeIndex(indexOf(settings.bodyB));
+        if (!settings.collideConnected) {
+            const std::uint64_t key = PairTable::key(settings.bodyA.index, settings.bodyB.index);
+            const std::uint32_t count = jointFilteredPairs_.find(key);
+            if (count == PairTable::kNotFound) jointFilteredPairs_.insert(key, 1);
+            else jointFilteredPairs_.assign(key, count + 1);
+            contactManager_.removePair(settings.bodyA.index, settings.bodyB.index);
+        }
+    }
+    return id;
+}
+
+void World::destroyJoint(JointId id) {
+    const Joint joint = joints_.joints[indexOf(id)];
+    joints_.remove(id);
+    wakeIndex(indexOf(joint.bodyA));
+    if (!joint.bodyB.isValid()) return;
+    wakeIndex(indexOf(joint.bodyB));
+    if (joint.collideConnected) return;
+    const std::uint64_t key = PairTable::key(joint.bodyA.index, joint.bodyB.index);
+    const std::uint32_t count = jointFilteredPairs_.find(key);
+    if (count > 1) {
+        jointFilteredPairs_.assign(key, count - 1);
+        return;
+    }
+    jointFilteredPairs_.erase(key);
+    // The broad phase reports a pair again only when a proxy moves: mark both moved.
+    broadPhase_.touchProxy(bodies_.proxy[indexOf(joint.bodyA)]);
+    broadPhase_.touchProxy(bodies_.proxy[indexOf(joint.bodyB)]);
+}
+
+std::vector<JointId> World::jointIds() const {
+    std::vector<JointId> ids;
+    ids.reserve(joints_.size());
+    for (std::size_t i = 0; i < joints_.size(); ++i) ids.push_back(joints_.idAt(i));
+    return ids;
+}
+
+JointType World::jointType(JointId id) const { return joints_.joints[indexOf(id)].type; }
+BodyId World::jointBodyA(JointId id) const { return joints_.joints[indexOf(id)].bodyA; }
+BodyId World::jointBodyB(JointId id) const { return joints_.joints[indexOf(id)].bodyB; }
+const std::string& World::jointName(JointId id) const { return joints_.names[indexOf(id)]; }
+JointError World::jointError(JointId id) const { return joints_.error(indexOf(id), bodies_); }
+
+JointError World::worstJointError() const {
+    JointError worst;
+    for (std::size_t i = 0; i < joints_.size(); ++i) {
+        const JointError e = joints_.error(i, bodies_);
+        worst.position = std::max(worst.position, e.position);
+        worst.angle = std::max(worst.angle, e.angle);
+    }
+    return worst;
 }
 
 std::vector<BodyId> World::bodyIds() const {
@@ -137,14 +245,13 @@ bool World::needs(Effect effect, const Activity& activity) const {
         case Effect::Gyroscopic: return activity.anySpinning;
         case Effect::Sleeping: return settings_.sleep.enabled && activity.anyAwakeDynamic;
         case Effect::Contacts: return activity.anyAwakeDynamic && bodies_.size() > 1;
-        // Friction and restitution are decided per constraint by the contact solver.
-        case Effect::Friction:
-        case Effect::Restitution:
+        case Effect::Joints: return activity.anyAwakeDynamic && !joints_.empty();
         // Continuous collision guards contacts against fast bodies; sweepFastBodies decides per
         // step whether any body is fast enough to need it.
         case Effect::Ccd: return needs(Effect::Contacts, activity);
-        // Joints are not part of the engine yet: nothing can need them.
-        case Effect::Joints:
+        // Friction and restitution are decided per constraint by the contact solver.
+        case Effect::Friction:
+        case Effect::Restitution:
         case Effect::Count: return false;
     }
     return false;
@@ -153,17 +260,17 @@ bool World::needs(Effect effect, const Activity& activity) const {
 // One step, in order of execution:
 //   1. broad phase: move the fat boxes of awake bodies; new overlapping pairs become contacts
 //   2. narrow phase: a fresh manifold for every contact with an awake body (impulses carried over)
-//   3. islands: bodies touching an awake island wake up with it
-//   4. prepare contact constraints (once per step, with last step's impulses)
+//   3. islands (through contacts and joints): bodies touching an awake island wake up with it
+//   4. prepare contact and joint constraints (once per step, with last step's impulses)
 //   for each substep of h = timeStep / substeps:
 //     5. integrate velocities: gravity, external forces, gyroscopic torque, damping
-//     6. warm start, then velocity iterations with position correction (soft contact or Baumgarte)
+//     6. warm start, then velocity iterations with position correction (joints, then contacts)
 //     7. integrate positions: centres of mass and orientations from the new velocities
 //     8. relax iterations: the same constraints without the push, so it does not become bounce
 //   9. restitution, and impulses stored for the next step's warm start
 //  10. continuous collision: a fast body that would pass through another stops at the time of impact
 //  11. sleep: islands that stayed slow long enough stop being simulated
-// Stages 1-4, 6 and 8-9 run only when contacts are needed; see needs() for every effect.
+// Stages 1-4, 6 and 8-9 run only when contacts or joints are needed; see needs() for every effect.
 void World::step() {
     const auto stepStart = std::chrono::steady_clock::now();
     StepProfile profile;
@@ -175,6 +282,7 @@ void World::step() {
     const bool damping = needs(Effect::Damping, activity);
     const bool gyroscopic = needs(Effect::Gyroscopic, activity);
     const bool contacts = needs(Effect::Contacts, activity);
+    const bool joints = needs(Effect::Joints, activity);
     const bool sleeping = needs(Effect::Sleeping, activity);
     const bool continuous = needs(Effect::Ccd, activity);
 
@@ -199,8 +307,7 @@ void World::step() {
         }
         {
             ScopedStageTimer timer(slot(Stage::Sleep));
-            islands_.build(bodies_, contactManager_.contacts());
-            islands_.wakeTouchedIslands(bodies_, [this](std::size_t i) { setAwake(i, true); });
+            buildIslandsAndWake();
         }
         ScopedStageTimer timer(slot(Stage::SolveConstraints));
         ContactSolver::Params params;
@@ -211,27 +318,45 @@ void World::step() {
         params.contact = settings_.contact;
         contactSolver_.prepare(contactManager_.contacts(), bodies_, params);
     }
+    if (joints) {
+        if (!contacts) {
+            ScopedStageTimer timer(slot(Stage::Sleep));
+            buildIslandsAndWake();
+        }
+        ScopedStageTimer timer(slot(Stage::SolveConstraints));
+        jointSolver_.prepare(joints_, bodies_, {h, settings_.joint});
+    }
     if (continuous) recordSweepStarts();
     const bool solveContacts = contacts && contactSolver_.constraintCount() > 0;
     const bool relax = solveContacts && settings_.solver.positionCorrection == PositionCorrection::SoftStep;
+    // Joints are always soft, so they always relax. In each pass joints go first and contacts
+    // have the last word (Box2D v3's order): penetration shows more than joint stretch.
+    const bool solveJoints = joints && jointSolver_.constraintCount() > 0;
 
     for (int substep = 0; substep < settings_.substeps; ++substep) {
         {
             ScopedStageTimer timer(slot(Stage::IntegrateVelocities));
             integrateVelocities(bodies_, velocityParams, h);
         }
-        if (solveContacts) {
+        if (solveContacts || solveJoints) {
             ScopedStageTimer timer(slot(Stage::SolveConstraints));
-            contactSolver_.warmStart(bodies_);
-            for (int i = 0; i < settings_.solver.velocityIterations; ++i) contactSolver_.solve(bodies_, true);
+            if (solveJoints) jointSolver_.warmStart(bodies_);
+            if (solveContacts) contactSolver_.warmStart(bodies_);
+            for (int i = 0; i < settings_.solver.velocityIterations; ++i) {
+                if (solveJoints) jointSolver_.solve(bodies_, true);
+                if (solveContacts) contactSolver_.solve(bodies_, true);
+            }
         }
         {
             ScopedStageTimer timer(slot(Stage::IntegratePositions));
             integratePositions(bodies_, h);
         }
-        if (relax) {
+        if (relax || solveJoints) {
             ScopedStageTimer timer(slot(Stage::SolveConstraints));
-            for (int i = 0; i < settings_.solver.positionIterations; ++i) contactSolver_.solve(bodies_, false);
+            for (int i = 0; i < settings_.solver.positionIterations; ++i) {
+                if (solveJoints) jointSolver_.solve(bodies_, false);
+                if (relax) contactSolver_.solve(bodies_, false);
+            }
         }
     }
     if (solveContacts) {
@@ -245,7 +370,7 @@ void World::step() {
     }
     if (sleeping) {
         ScopedStageTimer timer(slot(Stage::Sleep));
-        if (!contacts) islands_.build(bodies_, contactManager_.contacts());
+        if (!contacts && !joints) islands_.build(bodies_, contactManager_.contacts(), joints_);
         islands_.sleepRestingIslands(bodies_, settings_.sleep, settings_.timeStep,
                                      [this](std::size_t i) { setAwake(i, false); });
     }
@@ -256,6 +381,7 @@ void World::step() {
     if (damping) countEffect(Effect::Damping);
     if (gyroscopic) countEffect(Effect::Gyroscopic);
     if (contacts) countEffect(Effect::Contacts);
+    if (solveJoints) countEffect(Effect::Joints);
     if (solveContacts && contactSolver_.usesFriction()) countEffect(Effect::Friction);
     if (solveContacts && contactSolver_.usesRestitution()) countEffect(Effect::Restitution);
     if (sleeping) countEffect(Effect::Sleeping);
@@ -272,7 +398,7 @@ void World::step() {
         ++counters.manifolds;
         counters.contactPoints += static_cast<std::uint32_t>(contact.manifold.pointCount);
     }
-    counters.islands = contacts ? islands_.awakeIslandCount() : 0;
+    counters.islands = contacts || joints ? islands_.awakeIslandCount() : 0;
     profile.maxPenetration = solveContacts ? contactSolver_.maxPenetration() : 0.0f;
 
     ++stepCount_;
@@ -289,6 +415,12 @@ void World::updateBroadPhase(float dt) {
         broadPhase_.moveProxy(bodies_.proxy[i], bodies_.bounds[i], dt * bodies_.linearVelocity[i]);
     }
     broadPhase_.updatePairs(newPairs_);
+    // Jointed bodies do not collide unless their joint asks for it (collideConnected).
+    if (jointFilteredPairs_.size() > 0) {
+        std::erase_if(newPairs_, [this](const BodyPair& pair) {
+            return jointFilteredPairs_.find(PairTable::key(pair.a, pair.b)) != PairTable::kNotFound;
+        });
+    }
     contactManager_.addPairs(newPairs_, bodies_);
 }
 
@@ -307,9 +439,10 @@ void World::recordSweepStarts() {
 
 // Speculative contacts stop most fast bodies at the surface they approach; this catches the rest
 // (a body that meets something its start-of-step contacts did not see). A body is swept when it is
-// flagged `ccd` or moved more than half its thinnest dimension. It is swept against every other
-// body at that body's end pose, and put back to the first time of impact, keeping its velocity:
-// the next step's contacts take it from there. Returns whether any body was fast.
+// flagged `ccd` or moved more than half its thinnest dimension: against static bodies, or, when
+// flagged, against every other body at that body's end pose. It is put back to the first time of
+// impact, keeping its velocity: the next step's contacts take it from there. Returns whether any
+// body was fast.
 bool World::sweepFastBodies() {
     constexpr float kFastFraction = 0.5f;
     const float target = settings_.contact.linearSlop;
@@ -321,19 +454,32 @@ bool World::sweepFastBodies() {
         const Shape& shape = bodies_.shape[i];
         const float travel = glm::length(sweep.center1 - sweep.center0) +
                              sweep.rotationAngle() * glm::length(bodies_.bounds[i].halfExtents());
-        if (!bodies_.ccd[i] && travel <= kFastFraction * minimumExtent(shape)) continue;
+        const float thin = kFastFraction * minimumExtent(shape);
+        if (!bodies_.ccd[i] && travel <= thin) continue;
         anyFast = true;
 
         Aabb swept = worldBounds(shape, sweep.at(0.0f));
         swept.grow(worldBounds(shape, sweep.at(1.0f)));
         float first = 1.0f;
+        const std::uint32_t slot = bodies_.idAt(i).index;
         broadPhase_.tree().query(swept, [&](ProxyId proxy) {
-            const std::size_t j = bodies_.denseIndexOfSlot(broadPhase_.userData(proxy));
-            if (j == i) return;
+            const std::uint32_t otherSlot = broadPhase_.userData(proxy);
+            if (otherSlot == slot) return;
+            // Bodies a joint keeps from colliding may pass through each other.
+            if (jointFilteredPairs_.find(PairTable::key(slot, otherSlot)) != PairTable::kNotFound) return;
+            const std::size_t j = bodies_.denseIndexOfSlot(otherSlot);
+            // Between moving bodies speculative contacts suffice unless the body asked for sweeps.
+            if (!bodies_.ccd[i] && bodies_.motion[j] != MotionType::Static) return;
             const Sweep resting{bodies_.localCenterOfMass[j], bodies_.centerOfMass[j], bodies_.centerOfMass[j],
                                 bodies_.orientation[j], bodies_.orientation[j]};
             const TimeOfImpact toi = timeOfImpact(shape, sweep, bodies_.shape[j], resting, target, 0.25f * target);
-            if (toi.outcome == TimeOfImpact::Outcome::Hit) first = std::min(first, toi.fraction);
+            if (toi.outcome != TimeOfImpact::Outcome::Hit) return;
+            // A body grazing past (sliding along the ground, a link swinging by a post) comes within
+            // the target without any risk of passing through: its contacts handle it, and putting it
+            // back would only stall it. Only a hit whose remaining approach along the normal could
+            // carry the body through counts, unless the body is flagged.
+            const float approach = glm::dot(sweep.center1 - sweep.center0, toi.normal) * (1.0f - toi.fraction);
+            if (bodies_.ccd[i] || approach > thin) first = std::min(first, toi.fraction);
         });
         if (first < 1.0f) {
             const Transform pose = sweep.at(first);
@@ -355,6 +501,17 @@ std::size_t World::indexOf(BodyId id) const {
     const int i = bodies_.denseIndex(id);
     if (i < 0) throw std::out_of_range("stale or invalid body id");
     return static_cast<std::size_t>(i);
+}
+
+std::size_t World::indexOf(JointId id) const {
+    const int i = joints_.denseIndex(id);
+    if (i < 0) throw std::out_of_range("stale or invalid joint id");
+    return static_cast<std::size_t>(i);
+}
+
+void World::buildIslandsAndWake() {
+    islands_.build(bodies_, contactManager_.contacts(), joints_);
+    islands_.wakeTouchedIslands(bodies_, [this](std::size_t i) { setAwake(i, true); });
 }
 
 Vec3 World::position(BodyId id) const { return bodies_.origin(indexOf(id)); }

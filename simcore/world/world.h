@@ -7,6 +7,8 @@
 #include "simcore/dynamics/body_storage.h"
 #include "simcore/dynamics/contact_solver.h"
 #include "simcore/dynamics/islands.h"
+#include "simcore/dynamics/joint_solver.h"
+#include "simcore/dynamics/joint_storage.h"
 #include "simcore/world/profiler.h"
 #include "simcore/world/world_settings.h"
 
@@ -51,6 +53,24 @@ public:
     bool contains(BodyId id) const { return bodies_.denseIndex(id) >= 0; }
     std::size_t bodyCount() const { return bodies_.size(); }
     std::vector<BodyId> bodyIds() const;  // in dense (creation, modulo removals) order
+
+    // Joints hold two bodies together (or one to the world); destroying a body destroys its
+    // joints. Jointed bodies do not collide with each other unless collideConnected is set.
+    // createJoint throws std::invalid_argument naming the bad field (unknown body, the same body
+    // twice, non-finite anchor, zero axis, limits.lower > limits.upper, ...).
+    JointId createJoint(const JointCreationSettings& settings);
+    void destroyJoint(JointId id);
+    bool contains(JointId id) const { return joints_.denseIndex(id) >= 0; }
+    std::size_t jointCount() const { return joints_.size(); }
+    std::vector<JointId> jointIds() const;  // in dense (creation, modulo removals) order
+    JointType jointType(JointId id) const;
+    BodyId jointBodyA(JointId id) const;
+    BodyId jointBodyB(JointId id) const;  // invalid for a joint to the world
+    const std::string& jointName(JointId id) const;
+    // How far the joint is from satisfied now: worst position (m) and angle (rad) error.
+    JointError jointError(JointId id) const;
+    // The largest position and the largest angle error over all joints (each its own maximum).
+    JointError worstJointError() const;
 
     // Advances the world by settings().timeStep.
     void step();
@@ -97,6 +117,8 @@ public:
     const BodyStorage& bodies() const { return bodies_; }
     // Persistent contacts (touching or speculative), for debug drawing and tests.
     const std::vector<Contact>& contacts() const { return contactManager_.contacts(); }
+    // Direct read access to the joints, for debug drawing and reports.
+    const JointStorage& joints() const { return joints_; }
 
 private:
     // What the awake bodies are doing, gathered once per step to decide which effects run.
@@ -113,6 +135,8 @@ private:
     void setAwake(std::size_t i, bool awake);
     void countEffect(Effect effect) { ++effectUsage_.stepsRun[static_cast<int>(effect)]; }
     std::size_t indexOf(BodyId id) const;  // dense index; throws std::out_of_range for a stale id
+    std::size_t indexOf(JointId id) const;
+    void buildIslandsAndWake();            // islands over contacts and joints; touched islands wake
     void wakeIndex(std::size_t i);
 
     WorldSettings settings_;
@@ -121,6 +145,9 @@ private:
     ContactManager contactManager_;
     ContactSolver contactSolver_;
     Islands islands_;
+    JointStorage joints_;
+    JointSolver jointSolver_;
+    PairTable jointFilteredPairs_;    // body-slot pair -> how many joints keep the two from colliding
     std::vector<BodyPair> newPairs_;  // scratch, reused every step
     std::vector<Vec3> sweepStartCenter_;     // scratch: awake bodies' poses at the start of the step,
     std::vector<Quat> sweepStartRotation_;   // for continuous collision

@@ -1,0 +1,72 @@
+#include "app/document/body_templates.h"
+
+#include "simcore/shapes/convex_hull.h"
+
+#include <QCoreApplication>
+
+#include <stdexcept>
+
+namespace interplay {
+namespace {
+
+const std::shared_ptr<const simcore::ConvexHull>& rockHull() {
+    // Built once and shared by every hull body the editor makes (hulls are immutable).
+    static const std::shared_ptr<const simcore::ConvexHull> hull = [] {
+        const std::vector<simcore::Vec3> points{
+            {-0.45f, -0.40f, -0.35f}, {0.50f, -0.40f, -0.30f}, {0.05f, -0.40f, 0.50f}, {-0.40f, 0.00f, 0.45f},
+            {0.45f, 0.05f, 0.40f},    {0.00f, 0.50f, 0.00f},   {-0.35f, 0.30f, -0.30f}, {0.30f, 0.35f, -0.25f},
+            {0.55f, 0.00f, -0.05f},   {-0.55f, 0.05f, 0.05f},
+        };
+        simcore::ConvexHull::BuildResult built = simcore::ConvexHull::build(points);
+        if (!built.hull) throw std::logic_error("template hull: " + built.error);
+        return built.hull;
+    }();
+    return hull;
+}
+
+// Colours (linear RGB) per shape type, so new bodies are told apart at a glance.
+simcore::Vec3 templateColor(simcore::ShapeType type) {
+    switch (type) {
+    case simcore::ShapeType::Box: return {0.80f, 0.25f, 0.10f};
+    case simcore::ShapeType::Sphere: return {0.10f, 0.45f, 0.70f};
+    case simcore::ShapeType::Capsule: return {0.90f, 0.55f, 0.05f};
+    case simcore::ShapeType::Cylinder: return {0.35f, 0.20f, 0.70f};
+    case simcore::ShapeType::ConvexHull: return {0.25f, 0.55f, 0.25f};
+    }
+    return {0.5f, 0.5f, 0.5f};
+}
+
+}  // namespace
+
+simcore::Shape templateShape(simcore::ShapeType type) {
+    switch (type) {
+    case simcore::ShapeType::Box: return simcore::Shape::box(simcore::Vec3(0.5f));
+    case simcore::ShapeType::Sphere: return simcore::Shape::sphere(0.5f);
+    case simcore::ShapeType::Capsule: return simcore::Shape::capsule(0.3f, 0.4f);
+    case simcore::ShapeType::Cylinder: return simcore::Shape::cylinder(0.45f, 0.4f);
+    case simcore::ShapeType::ConvexHull: return simcore::Shape::convexHull(rockHull());
+    }
+    return simcore::Shape::sphere(0.5f);
+}
+
+simcore::SceneBody templateBody(simcore::ShapeType type, const QString& name, const simcore::Vec3& position) {
+    simcore::SceneBody body;
+    body.body.name = name.toStdString();
+    body.body.shape = templateShape(type);
+    body.body.position = position;
+    body.color = templateColor(type);
+    return body;
+}
+
+QString shapeDisplayName(simcore::ShapeType type) {
+    switch (type) {
+    case simcore::ShapeType::Box: return QCoreApplication::translate("interplay::shapes", "Box");
+    case simcore::ShapeType::Sphere: return QCoreApplication::translate("interplay::shapes", "Sphere");
+    case simcore::ShapeType::Capsule: return QCoreApplication::translate("interplay::shapes", "Capsule");
+    case simcore::ShapeType::Cylinder: return QCoreApplication::translate("interplay::shapes", "Cylinder");
+    case simcore::ShapeType::ConvexHull: return QCoreApplication::translate("interplay::shapes", "Hull");
+    }
+    return {};
+}
+
+}  // namespace interplay

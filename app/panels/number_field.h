@@ -1,0 +1,43 @@
+#pragma once
+// A line edit for one number with an accepted range. Commits on Enter or focus loss: a value in
+// range is emitted by committed(); anything else (not a number, NaN, infinity, out of range) is
+// refused with a sentence saying why, through rejected(), and the field shows its value again.
+// An unchanged text commits nothing, so tabbing through fields never creates history entries.
+
+#include <QLineEdit>
+
+#include <optional>
+#include <variant>
+
+namespace interplay {
+
+class NumberField : public QLineEdit {
+    Q_OBJECT
+
+public:
+    NumberField(QString quantity, double minimum, double maximum, QWidget* parent = nullptr);
+
+    // The accepted range, when it depends on another field (mass or density).
+    void setRange(double minimum, double maximum);
+
+    // Shows `value`; without a value the field is empty (several bodies that differ).
+    void setValue(std::optional<double> value);
+    std::optional<double> value() const { return m_value; }
+
+    // Parses `text` as this field would: the number, or the reason it is refused.
+    std::variant<double, QString> parse(const QString& text) const;
+
+signals:
+    void committed(double value);
+    void rejected(const QString& message);
+
+private:
+    void commit();
+    QString display() const;
+
+    QString m_quantity;  // what the number is, for messages: "Friction", "Radius"
+    double m_minimum, m_maximum;
+    std::optional<double> m_value;
+};
+
+}  // namespace interplay

@@ -1,0 +1,75 @@
+#include "app/panels/profiler_panel.h"
+
+#include "app/panels/profiler_plot.h"
+#include "app/simulation/simulation_controller.h"
+
+#include "simcore/world/world.h"
+
+#include <QFormLayout>
+#include <QLabel>
+#include <QHBoxLayout>
+
+namespace interplay {
+
+ProfilerPanel::ProfilerPanel(SimulationController* simulation, QWidget* parent)
+    : QWidget(parent), m_simulation(simulation), m_figures(new QWidget(this)) {
+    // Plot and figures side by side: the dock sits under the viewport, wide and low.
+    auto* layout = new QHBoxLayout(this);
+    layout->addWidget(new ProfilerPlot(simulation, this), 1);
+    auto* form = new QFormLayout(m_figures);
+    form->setContentsMargins(0, 0, 0, 0);
+    form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+    m_figures->setMinimumWidth(300);  // room for seven-digit energies
+    layout->addWidget(m_figures);
+
+    addFigure(QStringLiteral("msPerStep"), tr("Time per step"));
+    addFigure(QStringLiteral("awakeBodies"), tr("Bodies awake"));
+    addFigure(QStringLiteral("contacts"), tr("Pairs / manifolds / points"));
+    addFigure(QStringLiteral("islands"), tr("Islands"));
+    addFigure(QStringLiteral("kineticEnergy"), tr("Kinetic energy"));
+    addFigure(QStringLiteral("potentialEnergy"), tr("Potential energy"));
+    addFigure(QStringLiteral("energyChange"), tr("Energy change"));
+    addFigure(QStringLiteral("maxPenetration"), tr("Max penetration"));
+
+    connect(simulation, &SimulationController::stepped, this, &ProfilerPanel::refresh);
+    connect(simulation, &SimulationController::worldRebuilt, this, [this] {
+        const simcore::World* world = m_simulation->world();
+        m_initialEnergy = world ? world->kineticEnergy() + world->potentialEnergy() : 0.0;
+        refresh();
+    });
+    refresh();
+}
+
+QLabel* ProfilerPanel::addFigure(const QString& key, const QString& label) {
+    auto* value = new QLabel(m_figures);
+    value->setObjectName(key);
+    value->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    static_cast<QFormLayout*>(m_figures->layout())->addRow(label, value);
+    return value;
+}
+
+QString ProfilerPanel::figure(const QString& key) const {
+    const auto* label = m_figures->findChild<QLabel*>(key);
+    return label ? label->text() : QString();
+}
+
+void ProfilerPanel::refresh() {
+    const auto set = [this](const char* key, const QString& text) {
+        if (auto* label = m_figures->findChild<QLabel*>(QLatin1String(key))) label->setText(text);
+    };
+    const simcore::World* world = m_simulation->world();
+    if (!world) return;
+    const simcore::StepProfile& profile = world->lastStepProfile();
+    const simcore::StepCounters& c = profile.counters;
+    const double kinetic = world->kineticEnergy(), potential = world->potentialEnergy();
+    set("msPerStep", world->stepCount() == 0 ? tr("–") : tr("%1 ms").arg(profile.totalMs, 0, 'f', 3));
+    set("awakeBodies", tr("%1 of %2 dynamic").arg(c.awakeBodies).arg(c.dynamicBodies));
+    set("contacts", tr("%1 / %2 / %3").arg(c.pairs).arg(c.manifolds).arg(c.contactPoints));
+    set("islands", QString::number(c.islands));
+    set("kineticEnergy", tr("%1 J").arg(kinetic, 0, 'f', 3));
+    set("potentialEnergy", tr("%1 J").arg(potential, 0, 'f', 3));
+    set("energyChange", tr("%1 J").arg(kinetic + potential - m_initialEnergy, 0, 'f', 3));
+    set("maxPenetration", tr("%1 mm").arg(profile.maxPenetration * 1000.0f, 0, 'f', 2));
+}
+
+}  // namespace interplay

@@ -1,0 +1,740 @@
+// The whole editor window, with real OpenGL under Xvfb: title and modified marker, the
+// unsaved-changes prompt (answered by a test hook, never a modal dialog), open/save/revert through
+// the window, recent files, autosave and recovery, a file changed by another program, a failing
+// save; clicking a body's pixel selects it and dragging moves it as one undo entry; Play, Step
+// and Reset leave the authored scene as it was; the toolbar's edit actions; the QML settings panel
+// loads and its controls change the running world; every demo scene renders.
+
+#include "app/document/scene_document.h"
+#include "app/document/scene_tree_model.h"
+#include "app/main_window.h"
+#include "app/panels/profiler_panel.h"
+#include "app/panels/simulation_settings_panel.h"
+#include "app/simulation/simulation_controller.h"
+#include "app/viewport/debug_draw_options.h"
+#include "app/viewport/viewport.h"
+
+#include "simcore/io/scene_io.h"
+#include "simcore/world/world.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QDir>
+#include <QDockWidget>
+#include <QFile>
+#include <QImage>
+#include <QItemSelectionModel>
+#include <QMenu>
+#include <QMimeData>
+#include <QQuickItem>
+#include <QQuickWidget>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QSurfaceFormat>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTreeView>
+#include <QUndoStack>
+
+#include <memory>
+#include <set>
+
+using interplay::MainWindow;
+
+namespace {
+
+std::string sceneText(const simcore::Scene& scene) {
+    return simcore::serializeScene(scene);
+}
+
+int distinctColors(const QImage& image) {
+    std::set<QRgb> colors;
+    for (int y = 0; y < image.height(); y += 2) {
+        for (int x = 0; x < image.width(); x += 2) colors.insert(image.pixel(x, y) & 0xFFFFFFu);
+    }
+    return static_cast<int>(colors.size());
+}
+
+// Records what the window asked, and answers as told.
+struct ScriptedPrompts {
+    MainWindow::UnsavedChoice unsavedAnswer = MainWindow::UnsavedChoice::Cancel;
+    bool confirmAnswer = true;
+    QString fileAnswer;
+    int unsavedAsked = 0;
+    QStringList questions;
+    QStringList errors;
+
+    void install(MainWindow& window) {
+        auto& p = window.prompts();
+        p.unsavedChanges = [this](const QString&) {
+            ++unsavedAsked;
+            return unsavedAnswer;
+        };
+        p.confirm = [this](const QString&, const QString& question) {
+            questions << question;
+            return confirmAnswer;
+        };
+        p.error = [this](const QString&, const QString& text, const QString& details) { errors << text + '\n' + details; };
+        p.chooseFile = [this](MainWindow::FileChoice, const QString&, const QString&) { return fileAnswer; };
+    }
+};
+
+// A body's centre on screen (widget pixels), as the viewport's camera projects it.
+QPoint pixelOf(const interplay::Viewport& viewport, const simcore::Vec3& point) {
+    const glm::vec3 p = viewport.camera().project(point, float(viewport.width()), float(viewport.height()));
+    return {int(std::lround(p.x)), int(std::lround(p.y))};
+}
+
+// Items by objectName through the visual tree: a Repeater's items have no QObject parent to find.
+QQuickItem* findItem(QQuickItem* root, const QString& name) {
+    if (root->objectName() == name) return root;
+    for (QQuickItem* child : root->childItems()) {
+        if (QQuickItem* found = findItem(child, name)) return found;
+    }
+    return nullptr;
+}
+
+simcore::Vec3 bodyCenter(const interplay::SceneDocument& document, int index) {
+    const simcore::BodyCreationSettings& b = document.body(index).body;
+    return simcore::worldBounds(b.shape, {b.position, b.orientation}).center();
+}
+
+}  // namespace
+
+class TestMainWindow : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void init();
+    void cleanup();
+
+    void titleShowsNameAndModifiedMarker();
+    void docksHaveNamesAndViewMenuEntries();
+    void unsavedChangesPrompt_data();
+    void unsavedChangesPrompt();
+    void openErrorIsReportedAndDocumentKept();
+    void saveAsOpenRevertRoundTrip();
+    void failingSaveLeavesOldFileAndTellsTheUser();
+    void recentFilesAreAbsoluteDeduplicatedAndCapped();
+    void autosaveIsOfferedForRecovery();
+    void fileChangedOnDiskOffersReload();
+
+    void droppingASceneFileOpensIt();
+    void clickingABodySelectsIt();
+    void flyModeMovesTheCamera();
+    void frameSelectionAimsAtTheSelectedBody();
+    void draggingABodyMovesItAsOneUndoEntry();
+    void playStepResetLeaveTheAuthoredSceneIntact();
+    void grabbingWhilePlayingPullsTheBody();
+    void applySimulatedPoseIsUndoable();
+    void addDuplicateDeleteActions();
+    void treeSelectionFollowsTheDocument();
+    void throwSpawnsIntoTheRunningWorldOnly();
+
+    void overlaysAndSleepingTintAreDrawn();
+    void qmlPanelLoadsAndChangesTheWorld();
+    void profilerShowsTheLatestStep();
+    void everyDemoSceneRenders_data();
+    void everyDemoSceneRenders();
+
+private:
+    std::unique_ptr<MainWindow> m_window;
+    ScriptedPrompts m_prompts;
+    QTemporaryDir m_dir;
+};
+
+void TestMainWindow::initTestCase() {
+    // Settings, recent files and recovery files go to a test location, not the user's.
+    QStandardPaths::setTestModeEnabled(true);
+    QCoreApplication::setOrganizationName("InterplayTests");
+    QCoreApplication::setApplicationName("test_main_window");
+    QVERIFY(m_dir.isValid());
+}
+
+void TestMainWindow::init() {
+    QSettings().clear();
+    QFile::remove(MainWindow::recoveryFilePath());
+    m_prompts = ScriptedPrompts{};
+    m_window = std::make_unique<MainWindow>();
+    m_prompts.install(*m_window);
+    m_window->openDefaultScene();
+    m_window->resize(1400, 900);
+    m_window->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+    m_window->viewport()->grabViewport();  // first frame: the camera frames the scene
+}
+
+void TestMainWindow::cleanup() {
+    if (m_window) {
+        m_window->document()->undoStack()->setClean();  // close without a prompt
+        m_window->close();
+    }
+    m_window.reset();
+}
+
+void TestMainWindow::titleShowsNameAndModifiedMarker() {
+    QCOMPARE(m_window->windowTitle(), QString("[*]Untitled — Interplay"));
+    QVERIFY(!m_window->isWindowModified());
+    m_window->action("addBox")->trigger();
+    QVERIFY(m_window->isWindowModified());
+    m_window->document()->undoStack()->undo();
+    QVERIFY(!m_window->isWindowModified());
+    m_window->document()->setSelectedBodies({1, 2});
+    QVERIFY(!m_window->isWindowModified());  // selecting is not editing
+}
+
+void TestMainWindow::docksHaveNamesAndViewMenuEntries() {
+    QStringList names;
+    for (QDockWidget* dock : m_window->findChildren<QDockWidget*>()) {
+        QVERIFY(!dock->objectName().isEmpty());
+        names << dock->objectName();
+        QVERIFY(m_window->findChild<QAction*>(dock->objectName() + "Toggle"));
+    }
+    names.sort();
+    QCOMPARE(names, (QStringList{"historyDock", "inspectorDock", "profilerDock", "sceneDock", "settingsDock"}));
+
+    // The layout survives a restart through QSettings.
+    auto* profiler = m_window->findChild<QDockWidget*>("profilerDock");
+    profiler->hide();
+    m_window->close();
+    m_window = std::make_unique<MainWindow>();
+    QVERIFY(m_window->findChild<QDockWidget*>("profilerDock")->isHidden());
+    QVERIFY(!m_window->findChild<QDockWidget*>("sceneDock")->isHidden());
+    // Standard shortcuts.
+    QCOMPARE(m_window->action("save")->shortcut(), QKeySequence(QKeySequence::Save));
+    QCOMPARE(m_window->action("open")->shortcut(), QKeySequence(QKeySequence::Open));
+    QCOMPARE(m_window->action("duplicate")->shortcut(), QKeySequence(Qt::CTRL | Qt::Key_D));
+    QCOMPARE(m_window->action("play")->shortcut(), QKeySequence(Qt::Key_Space));
+    QCOMPARE(m_window->action("frameSelection")->shortcut(), QKeySequence(Qt::Key_F));
+}
+
+void TestMainWindow::unsavedChangesPrompt_data() {
+    QTest::addColumn<int>("answer");
+    QTest::addColumn<bool>("proceeds");
+    QTest::newRow("cancel") << int(MainWindow::UnsavedChoice::Cancel) << false;
+    QTest::newRow("discard") << int(MainWindow::UnsavedChoice::Discard) << true;
+    QTest::newRow("save") << int(MainWindow::UnsavedChoice::Save) << true;
+}
+
+void TestMainWindow::unsavedChangesPrompt() {
+    QFETCH(int, answer);
+    QFETCH(bool, proceeds);
+    const QString path = m_dir.filePath(QString("prompt-%1.json").arg(answer));
+    m_prompts.fileAnswer = path;  // Save on an untitled scene asks where
+    m_window->action("addSphere")->trigger();
+    const std::string edited = sceneText(m_window->document()->scene());
+    m_prompts.unsavedAnswer = static_cast<MainWindow::UnsavedChoice>(answer);
+
+    // New, Open and closing all ask.
+    QCOMPARE(m_window->newScene(), proceeds);
+    QCOMPARE(m_prompts.unsavedAsked, 1);
+    if (!proceeds) {
+        QCOMPARE(sceneText(m_window->document()->scene()), edited);
+        QVERIFY(m_window->document()->isModified());
+        QVERIFY(!m_window->open(INTERPLAY_SOURCE_DIR "/scenes/incline.json"));
+        QCOMPARE(m_prompts.unsavedAsked, 2);
+        QVERIFY(!m_window->close());
+        QCOMPARE(m_prompts.unsavedAsked, 3);
+        QVERIFY(m_window->isVisible());
+        return;
+    }
+    QVERIFY(!m_window->document()->isModified());
+    QCOMPARE(m_window->document()->bodyCount(), 1);  // New: the ground only
+    if (answer == int(MainWindow::UnsavedChoice::Save)) {
+        QVERIFY(QFile::exists(path));
+        interplay::SceneDocument saved;
+        QVERIFY(saved.load(path));
+        QCOMPARE(sceneText(saved.scene()), edited);
+    } else {
+        QVERIFY(!QFile::exists(path));
+    }
+    // Nothing to lose: no question.
+    QVERIFY(m_window->open(INTERPLAY_SOURCE_DIR "/scenes/incline.json"));
+    QCOMPARE(m_prompts.unsavedAsked, 1);
+}
+
+void TestMainWindow::openErrorIsReportedAndDocumentKept() {
+    const QString path = m_dir.filePath("bad.json");
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(R"({"format": "interplay.scene", "version": 1, "bodies": [{"shape": {"type": "box", "halfExtents": [1, "x", 1]}}]})");
+    file.close();
+    const std::string before = sceneText(m_window->document()->scene());
+    QVERIFY(!m_window->open(path));
+    QCOMPARE(m_prompts.errors.size(), 1);
+    QVERIFY2(m_prompts.errors.first().contains("bad.json") && m_prompts.errors.first().contains("/bodies/0/shape/halfExtents"),
+             qPrintable(m_prompts.errors.first()));
+    QCOMPARE(sceneText(m_window->document()->scene()), before);
+    QCOMPARE(m_window->windowTitle(), QString("[*]Untitled — Interplay"));
+}
+
+void TestMainWindow::saveAsOpenRevertRoundTrip() {
+    const QString path = m_dir.filePath("roundtrip");
+    m_prompts.fileAnswer = path;
+    m_window->action("addCapsule")->trigger();
+    QVERIFY(m_window->saveAs());
+    QCOMPARE(m_window->document()->filePath(), path + ".json");  // the extension is added
+    QCOMPARE(m_window->windowTitle(), QString("[*]roundtrip.json — Interplay"));
+    QVERIFY(!m_window->isWindowModified());
+    const std::string saved = sceneText(m_window->document()->scene());
+
+    m_window->action("addBox")->trigger();
+    QVERIFY(m_window->isWindowModified());
+    QVERIFY(m_window->revert());
+    QCOMPARE(sceneText(m_window->document()->scene()), saved);
+    QVERIFY(!m_window->isWindowModified());
+
+    QVERIFY(m_window->newScene());
+    QVERIFY(m_window->open(path + ".json"));
+    QCOMPARE(sceneText(m_window->document()->scene()), saved);
+    // Ctrl+S on a file with a path writes without asking.
+    m_prompts.fileAnswer.clear();
+    m_window->action("addHull")->trigger();
+    m_window->action("save")->trigger();
+    QVERIFY(!m_window->isWindowModified());
+    interplay::SceneDocument reread;
+    QVERIFY(reread.load(path + ".json"));
+    QCOMPARE(reread.bodyCount(), m_window->document()->bodyCount());
+}
+
+void TestMainWindow::failingSaveLeavesOldFileAndTellsTheUser() {
+    m_prompts.fileAnswer = "/proc/version";  // a read-only file system, even for root
+    QFile before("/proc/version");
+    QVERIFY(before.open(QIODevice::ReadOnly));
+    const QByteArray original = before.readAll();
+    m_window->action("addBox")->trigger();
+    QVERIFY(!m_window->saveAs());
+    QCOMPARE(m_prompts.errors.size(), 1);
+    QVERIFY2(m_prompts.errors.first().contains("unchanged"), qPrintable(m_prompts.errors.first()));
+    QFile after("/proc/version");
+    QVERIFY(after.open(QIODevice::ReadOnly));
+    QCOMPARE(after.readAll(), original);
+    QVERIFY(m_window->isWindowModified());
+}
+
+void TestMainWindow::recentFilesAreAbsoluteDeduplicatedAndCapped() {
+    QDir::setCurrent(INTERPLAY_SOURCE_DIR);
+    QVERIFY(m_window->open("scenes/incline.json"));  // relative: stored absolute
+    QVERIFY(m_window->open(INTERPLAY_SOURCE_DIR "/scenes/tumbling.json"));
+    QVERIFY(m_window->open(INTERPLAY_SOURCE_DIR "/scenes/incline.json"));
+    const QStringList recent = m_window->recentFiles();
+    QCOMPARE(recent.size(), 2);
+    QCOMPARE(recent.first(), QString(INTERPLAY_SOURCE_DIR "/scenes/incline.json"));
+    for (const QString& path : recent) QVERIFY(QDir::isAbsolutePath(path));
+
+    const QStringList scenes = QDir(INTERPLAY_SOURCE_DIR "/scenes").entryList({"*.json"}, QDir::Files);
+    QVERIFY(scenes.size() > MainWindow::kMaxRecentFiles);
+    for (const QString& name : scenes) QVERIFY(m_window->open(INTERPLAY_SOURCE_DIR "/scenes/" + name));
+    QCOMPARE(m_window->recentFiles().size(), MainWindow::kMaxRecentFiles);
+
+    auto* menu = m_window->findChild<QMenu*>("recentMenu");
+    emit menu->aboutToShow();
+    QCOMPARE(menu->actions().size(), MainWindow::kMaxRecentFiles + 2);  // files, separator, Clear
+    m_window->findChild<QAction*>("clearRecent")->trigger();
+    QVERIFY(m_window->recentFiles().isEmpty());
+    QVERIFY(!m_window->findChild<QAction*>("clearRecent")->isEnabled());
+
+    // The Examples menu lists the demo scenes.
+    auto* examples = m_window->findChild<QMenu*>("examplesMenu");
+    QStringList titles;
+    for (QAction* a : examples->actions()) titles << a->text();
+    QVERIFY2(titles.contains("pyramid10") && titles.contains("Thesis"), qPrintable(titles.join(", ")));
+}
+
+void TestMainWindow::autosaveIsOfferedForRecovery() {
+    const QString path = m_dir.filePath("recover.json");
+    QVERIFY(m_window->document()->save(path));
+    m_window->action("addCylinder")->trigger();
+    const std::string edited = sceneText(m_window->document()->scene());
+    m_window->setAutosaveInterval(50);
+    QTRY_VERIFY_WITH_TIMEOUT(QFile::exists(MainWindow::recoveryFilePath()), 5000);
+
+    // "Crash": the window goes away without closing (no prompt, no clean-up).
+    m_window->document()->undoStack()->setClean();
+    m_window.release()->deleteLater();  // as if the process ended here
+    QVERIFY(QFile::exists(MainWindow::recoveryFilePath()));
+
+    m_window = std::make_unique<MainWindow>();
+    m_prompts.install(*m_window);
+    m_prompts.confirmAnswer = true;
+    QVERIFY(m_window->offerRecovery());
+    QCOMPARE(m_prompts.questions.size(), 1);
+    QVERIFY2(m_prompts.questions.first().contains("recover.json"), qPrintable(m_prompts.questions.first()));
+    QCOMPARE(sceneText(m_window->document()->scene()), edited);
+    QCOMPARE(m_window->document()->filePath(), path);
+    QVERIFY(m_window->document()->isModified());
+
+    // Saving clears the recovery file; a normal close leaves none.
+    QVERIFY(m_window->save());
+    QVERIFY(!QFile::exists(MainWindow::recoveryFilePath()));
+    QVERIFY(!m_window->offerRecovery());
+}
+
+void TestMainWindow::fileChangedOnDiskOffersReload() {
+    const QString path = m_dir.filePath("watched.json");
+    QVERIFY(m_window->document()->save(path));
+    m_window->show();
+    // Our own save is not "changed by another program".
+    m_window->action("addBox")->trigger();
+    QVERIFY(m_window->save());
+    QTest::qWait(300);
+    QVERIFY(m_prompts.questions.isEmpty());
+
+    // Another program writes a different scene.
+    interplay::SceneDocument other;
+    QVERIFY(other.load(INTERPLAY_SOURCE_DIR "/scenes/incline.json"));
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    file.write(QByteArray::fromStdString(sceneText(other.scene())));
+    file.close();
+    m_prompts.confirmAnswer = true;
+    QTRY_COMPARE_WITH_TIMEOUT(m_prompts.questions.size(), 1, 5000);
+    QVERIFY(m_prompts.questions.first().contains("watched.json"));
+    QCOMPARE(sceneText(m_window->document()->scene()), sceneText(other.scene()));
+}
+
+void TestMainWindow::droppingASceneFileOpensIt() {
+    QMimeData data;
+    data.setUrls({QUrl::fromLocalFile(INTERPLAY_SOURCE_DIR "/scenes/tumbling.json")});
+    QDragEnterEvent enter(QPoint(50, 50), Qt::CopyAction, &data, Qt::LeftButton, {});
+    QApplication::sendEvent(m_window.get(), &enter);
+    QVERIFY(enter.isAccepted());
+    QDropEvent drop(QPointF(50, 50), Qt::CopyAction, &data, Qt::LeftButton, {});
+    QApplication::sendEvent(m_window.get(), &drop);
+    QTRY_COMPARE(m_window->document()->displayName(), QString("tumbling.json"));
+
+    QMimeData text;
+    text.setUrls({QUrl::fromLocalFile(INTERPLAY_SOURCE_DIR "/README.md")});
+    QDragEnterEvent refused(QPoint(50, 50), Qt::CopyAction, &text, Qt::LeftButton, {});
+    QApplication::sendEvent(m_window.get(), &refused);
+    QVERIFY(!refused.isAccepted());
+}
+
+void TestMainWindow::flyModeMovesTheCamera() {
+    interplay::Viewport* viewport = m_window->viewport();
+    const QPoint centre(viewport->width() / 2, viewport->height() / 2);
+    const glm::vec3 eye = viewport->camera().eye();
+    const glm::vec3 forward = viewport->camera().forward();
+    QTest::mousePress(viewport, Qt::RightButton, {}, centre);
+    QTest::keyPress(viewport, Qt::Key_W);
+    QTRY_VERIFY(glm::dot(viewport->camera().eye() - eye, forward) > 0.5f);  // flew forward
+    QTest::keyRelease(viewport, Qt::Key_W);
+    // Looking around turns the view about the eye, which stays put.
+    const glm::vec3 flown = viewport->camera().eye();
+    QTest::mouseMove(viewport, centre + QPoint(60, 0));
+    QVERIFY(glm::length(viewport->camera().eye() - flown) < 1e-3f);
+    QVERIFY(glm::dot(viewport->camera().forward(), forward) < 0.999f);
+    QTest::mouseRelease(viewport, Qt::RightButton, {}, centre + QPoint(60, 0));
+    QCOMPARE(m_window->document()->undoStack()->count(), 0);
+}
+
+void TestMainWindow::frameSelectionAimsAtTheSelectedBody() {
+    interplay::Viewport* viewport = m_window->viewport();
+    m_window->document()->setSelectedBodies({5});  // the rock, at one end of the row
+    const float before = glm::length(viewport->camera().target() - bodyCenter(*m_window->document(), 5));
+    m_window->action("frameSelection")->trigger();
+    const float after = glm::length(viewport->camera().target() - bodyCenter(*m_window->document(), 5));
+    QVERIFY2(before > 1.0f && after < 0.2f, qPrintable(QString("target %1 m, then %2 m from the rock").arg(before).arg(after)));
+    // The rock fills a good part of the view now.
+    viewport->grabViewport();
+    QCOMPARE(viewport->sceneBodyAt(QPoint(viewport->width() / 2, viewport->height() / 2)), 5);
+}
+
+void TestMainWindow::clickingABodySelectsIt() {
+    interplay::Viewport* viewport = m_window->viewport();
+    interplay::SceneDocument* document = m_window->document();
+    const QPoint sphere = pixelOf(*viewport, bodyCenter(*document, 2));
+    QCOMPARE(viewport->sceneBodyAt(sphere), 2);  // the ray cast agrees with the projection
+    QTest::mouseClick(viewport, Qt::LeftButton, {}, sphere);
+    QCOMPARE(document->selectedBodies(), QList<int>{2});
+
+    const QPoint cylinder = pixelOf(*viewport, bodyCenter(*document, 4));
+    QTest::mouseClick(viewport, Qt::LeftButton, Qt::ControlModifier, cylinder);
+    QCOMPARE(document->selectedBodies(), (QList<int>{2, 4}));
+    QTest::mouseClick(viewport, Qt::LeftButton, Qt::ShiftModifier, sphere);  // toggles off
+    QCOMPARE(document->selectedBodies(), QList<int>{4});
+
+    // The sky above the scene: nothing there, the selection clears.
+    QCOMPARE(viewport->sceneBodyAt(QPoint(viewport->width() / 2, 3)), -1);
+    QTest::mouseClick(viewport, Qt::LeftButton, {}, QPoint(viewport->width() / 2, 3));
+    QVERIFY(document->selectedBodies().isEmpty());
+    QCOMPARE(document->undoStack()->count(), 0);
+
+    // The selection is drawn: the outline changes pixels around the body.
+    const QImage plain = viewport->grabViewport();
+    document->setSelectedBodies({2});
+    const QImage outlined = viewport->grabViewport();
+    QVERIFY(plain != outlined);
+}
+
+void TestMainWindow::draggingABodyMovesItAsOneUndoEntry() {
+    interplay::Viewport* viewport = m_window->viewport();
+    interplay::SceneDocument* document = m_window->document();
+    const simcore::Vec3 start = document->body(2).body.position;
+    const QPoint from = pixelOf(*viewport, bodyCenter(*document, 2));
+    QTest::mousePress(viewport, Qt::LeftButton, {}, from);
+    for (int i = 1; i <= 10; ++i) QTest::mouseMove(viewport, from + QPoint(8 * i, 0));
+    QTest::mouseRelease(viewport, Qt::LeftButton, {}, from + QPoint(80, 0));
+
+    const simcore::Vec3 end = document->body(2).body.position;
+    QVERIFY2(glm::length(end - start) > 0.2f, "the body should have moved");
+    QCOMPARE(end.y, start.y);  // on a horizontal plane
+    QCOMPARE(document->undoStack()->count(), 1);
+    QCOMPARE(document->undoStack()->undoText(), QString("Move %1").arg(document->bodyName(2)));
+    // The running world shows the new authored position.
+    const simcore::BodyId id = m_window->simulation()->bodyIds()[2];
+    QVERIFY(glm::length(m_window->simulation()->world()->position(id) - end) < 1e-4f);
+    document->undoStack()->undo();
+    QCOMPARE(document->body(2).body.position, start);
+    QVERIFY(!m_window->isWindowModified());
+}
+
+void TestMainWindow::playStepResetLeaveTheAuthoredSceneIntact() {
+    interplay::SimulationController* simulation = m_window->simulation();
+    const std::string authored = sceneText(m_window->document()->scene());
+    m_window->action("step")->trigger();
+    QCOMPARE(simulation->world()->stepCount(), std::uint64_t(1));
+    m_window->action("play")->trigger();
+    QVERIFY(simulation->isPlaying());
+    QTRY_VERIFY_WITH_TIMEOUT(simulation->world()->stepCount() > 20, 5000);
+    m_window->action("play")->trigger();
+    QVERIFY(!simulation->isPlaying());
+    const simcore::BodyId box = simulation->bodyIds()[1];
+    QVERIFY(glm::length(simulation->world()->position(box) - m_window->document()->body(1).body.position) > 0.01f);
+    QCOMPARE(sceneText(m_window->document()->scene()), authored);
+    QVERIFY(!m_window->isWindowModified());
+    QCOMPARE(m_window->document()->undoStack()->count(), 0);
+
+    m_window->action("reset")->trigger();
+    QCOMPARE(simulation->world()->stepCount(), std::uint64_t(0));
+    QVERIFY(glm::length(simulation->world()->position(box) - m_window->document()->body(1).body.position) < 1e-5f);
+    QCOMPARE(sceneText(m_window->document()->scene()), authored);
+}
+
+void TestMainWindow::grabbingWhilePlayingPullsTheBody() {
+    interplay::SimulationController* simulation = m_window->simulation();
+    interplay::Viewport* viewport = m_window->viewport();
+    simulation->stepFrames(90);  // let everything land
+    const simcore::BodyId sphere = simulation->bodyIds()[2];
+    const simcore::Vec3 before = simulation->world()->position(sphere);
+    const QPoint at = pixelOf(*viewport, simulation->world()->centerOfMass(sphere));
+    QVERIFY(viewport->pick(at).has_value());
+    simulation->play();
+    QTest::mousePress(viewport, Qt::LeftButton, {}, at);
+    QVERIFY(simulation->isGrabbing());
+    for (int i = 1; i <= 10; ++i) QTest::mouseMove(viewport, at - QPoint(0, 10 * i));  // pull up
+    QTRY_VERIFY_WITH_TIMEOUT(simulation->world()->position(sphere).y > before.y + 0.3f, 5000);
+    QTest::mouseRelease(viewport, Qt::LeftButton, {}, at - QPoint(0, 100));
+    QVERIFY(!simulation->isGrabbing());
+    simulation->pause();
+    QCOMPARE(m_window->document()->undoStack()->count(), 0);  // grabbing is not an edit
+}
+
+void TestMainWindow::applySimulatedPoseIsUndoable() {
+    interplay::SimulationController* simulation = m_window->simulation();
+    const simcore::Vec3 authored = m_window->document()->body(1).body.position;
+    simulation->stepFrames(60);
+    const simcore::Vec3 simulated = simulation->world()->position(simulation->bodyIds()[1]);
+    m_window->action("applyPose")->trigger();
+    QCOMPARE(m_window->document()->body(1).body.position, simulated);
+    QCOMPARE(m_window->document()->undoStack()->undoText(), QString("Apply Simulated Pose"));
+    QVERIFY(m_window->isWindowModified());
+    m_window->document()->undoStack()->undo();
+    QCOMPARE(m_window->document()->body(1).body.position, authored);
+}
+
+void TestMainWindow::addDuplicateDeleteActions() {
+    interplay::SceneDocument* document = m_window->document();
+    QUndoStack* stack = document->undoStack();
+    const int count = document->bodyCount();
+    m_window->action("addBox")->trigger();
+    QCOMPARE(document->bodyCount(), count + 1);
+    QCOMPARE(document->bodyName(count), QString("Box 1"));
+    QCOMPARE(stack->undoText(), QString("Add Box 1"));
+    QCOMPARE(m_window->simulation()->bodyIds().size(), std::size_t(count + 1));  // the world follows
+
+    m_window->action("duplicate")->trigger();
+    QCOMPARE(document->bodyName(count + 1), QString("Box 2"));
+    QCOMPARE(stack->undoText(), QString("Duplicate Box 1"));
+    QCOMPARE(document->selectedBodies(), QList<int>{count + 1});
+    // Beside the original, not inside it.
+    QVERIFY(document->body(count + 1).body.position.x - document->body(count).body.position.x >= 1.0f);
+
+    document->setSelectedBodies({1, count});
+    m_window->action("delete")->trigger();
+    QCOMPARE(document->bodyCount(), count);
+    QCOMPARE(stack->undoText(), QString("Delete 2 Bodies"));
+    QCOMPARE(stack->count(), 3);
+    stack->undo();
+    QCOMPARE(document->bodyCount(), count + 2);
+    QCOMPARE(m_window->simulation()->bodyIds().size(), std::size_t(count + 2));
+}
+
+void TestMainWindow::treeSelectionFollowsTheDocument() {
+    QTreeView* tree = m_window->sceneTree();
+    interplay::SceneTreeModel* model = m_window->sceneTreeModel();
+    m_window->document()->setSelectedBodies({3});
+    const QModelIndexList rows = tree->selectionModel()->selectedRows();
+    QCOMPARE(rows.size(), 1);
+    QCOMPARE(model->bodyIndexOf(rows.first()), 3);
+    tree->selectionModel()->select(model->indexOfBody(1), QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
+    QCOMPARE(m_window->document()->selectedBodies(), QList<int>{1});
+    QVERIFY(!m_window->isWindowModified());
+}
+
+void TestMainWindow::throwSpawnsIntoTheRunningWorldOnly() {
+    interplay::SimulationController* simulation = m_window->simulation();
+    const std::string authored = sceneText(m_window->document()->scene());
+    const std::size_t before = simulation->bodyIds().size();
+    m_window->action("throw")->trigger();
+    QCOMPARE(simulation->bodyIds().size(), before + 1);
+    QVERIFY(simulation->isPlaying());
+    const simcore::BodyId thrown = simulation->bodyIds().back();
+    const simcore::Vec3 velocity = simulation->world()->linearVelocity(thrown);
+    QVERIFY(glm::dot(glm::normalize(velocity), m_window->viewport()->camera().forward()) > 0.99f);
+    QCOMPARE(simulation->sceneIndexOf(thrown), -1);
+    QCOMPARE(sceneText(m_window->document()->scene()), authored);
+    m_window->action("reset")->trigger();
+    QCOMPARE(simulation->bodyIds().size(), before);
+}
+
+void TestMainWindow::overlaysAndSleepingTintAreDrawn() {
+    interplay::Viewport* viewport = m_window->viewport();
+    interplay::DebugDrawOptions* options = m_window->debugDrawOptions();
+    const auto differingPixels = [](const QImage& a, const QImage& b) {
+        int count = 0;
+        for (int y = 0; y < a.height(); y += 2) {
+            for (int x = 0; x < a.width(); x += 2) count += a.pixel(x, y) != b.pixel(x, y);
+        }
+        return count;
+    };
+    m_window->simulation()->stepFrames(60);  // landed: contacts exist
+    const QImage plain = viewport->grabViewport();
+    QCOMPARE(differingPixels(plain, viewport->grabViewport()), 0);  // rendering is repeatable
+    options->setProperty("aabbs", true);
+    QVERIFY(differingPixels(plain, viewport->grabViewport()) > 200);
+    options->setProperty("aabbs", false);
+    options->setProperty("contactPoints", true);
+    options->setProperty("contactNormals", true);
+    QVERIFY(!m_window->simulation()->world()->contacts().empty());
+    QVERIFY(differingPixels(plain, viewport->grabViewport()) > 50);
+    options->setProperty("contactPoints", false);
+    options->setProperty("contactNormals", false);
+
+    // Asleep after a few seconds at rest: the tint greys the bodies.
+    m_window->simulation()->stepFrames(400);
+    const simcore::World* world = m_window->simulation()->world();
+    QVERIFY(!world->isAwake(m_window->simulation()->bodyIds()[2]));
+    const QImage tinted = viewport->grabViewport();
+    options->setProperty("sleepingTint", false);
+    QVERIFY(differingPixels(tinted, viewport->grabViewport()) > 500);
+}
+
+void TestMainWindow::qmlPanelLoadsAndChangesTheWorld() {
+    interplay::SimulationSettingsPanel* panel = m_window->settingsPanel();
+    QQuickWidget* quick = panel->quickWidget();
+    QCOMPARE(quick->status(), QQuickWidget::Ready);
+    QVERIFY2(panel->errors().isEmpty(), qPrintable(panel->errors().isEmpty() ? QString() : panel->errors().first().toString()));
+    QVERIFY(quick->rootObject());
+    auto* dock = m_window->findChild<QDockWidget*>("settingsDock");
+    dock->show();
+    dock->raise();
+    QTRY_VERIFY(quick->isVisible() && quick->width() > 100);
+
+    const auto clickItem = [quick](QQuickItem* item, QPointF at) {
+        // Scroll the panel until the control is in view, as a user would.
+        for (QQuickItem* ancestor = item->parentItem(); ancestor; ancestor = ancestor->parentItem()) {
+            if (!ancestor->inherits("QQuickFlickable")) continue;
+            auto* content = qvariant_cast<QQuickItem*>(ancestor->property("contentItem"));
+            const double top = item->mapToItem(content, QPointF(0, 0)).y();
+            ancestor->setProperty("contentY", std::max(0.0, top - 20.0));
+            break;
+        }
+        QTest::qWait(50);
+        const QPointF scene = item->mapToScene(at);
+        QTest::mouseClick(quick, Qt::LeftButton, {}, scene.toPoint());
+    };
+
+    // The substeps spin box's "up" indicator: one more substep, in the document and the world.
+    auto* substeps = findItem(quick->rootObject(), "substepsSpinBox");
+    QVERIFY(substeps);
+    const int before = m_window->document()->scene().settings.substeps;
+    QCOMPARE(substeps->property("value").toInt(), before);
+    auto* up = qvariant_cast<QQuickItem*>(qvariant_cast<QObject*>(substeps->property("up"))->property("indicator"));
+    QVERIFY(up);
+    clickItem(up, QPointF(up->width() / 2, up->height() / 2));
+    QTRY_COMPARE(m_window->document()->scene().settings.substeps, before + 1);
+    QCOMPARE(m_window->simulation()->world()->settings().substeps, before + 1);
+    QCOMPARE(m_window->document()->undoStack()->undoText(), QString("Change Substeps"));
+    // Undo reaches the panel.
+    m_window->document()->undoStack()->undo();
+    QTRY_COMPARE(substeps->property("value").toInt(), before);
+    QCOMPARE(m_window->simulation()->world()->settings().substeps, before);
+
+    // An effect check box switches the effect off in the running world.
+    auto* friction = findItem(quick->rootObject(), "effect_friction");
+    QVERIFY(friction);
+    QVERIFY(friction->property("checked").toBool());
+    clickItem(friction, QPointF(friction->height() / 2, friction->height() / 2));
+    QTRY_VERIFY(!m_window->simulation()->world()->settings().effects[simcore::Effect::Friction]);
+    QVERIFY(!friction->property("checked").toBool());
+
+    // A debug-draw box is a view option: the viewport draws contacts, the document stays clean of it.
+    auto* contacts = findItem(quick->rootObject(), "drawContactPointsCheckBox");
+    QVERIFY(contacts);
+    const int entries = m_window->document()->undoStack()->count();
+    clickItem(contacts, QPointF(contacts->height() / 2, contacts->height() / 2));
+    QTRY_VERIFY(m_window->debugDrawOptions()->contactPoints());
+    QCOMPARE(m_window->document()->undoStack()->count(), entries);
+}
+
+void TestMainWindow::profilerShowsTheLatestStep() {
+    interplay::ProfilerPanel* profiler = m_window->profiler();
+    QCOMPARE(profiler->figure("msPerStep"), QString("–"));
+    m_window->simulation()->stepFrames(5);
+    QVERIFY2(profiler->figure("msPerStep").endsWith(" ms"), qPrintable(profiler->figure("msPerStep")));
+    QVERIFY(profiler->figure("awakeBodies").contains("of 5 dynamic"));
+    QCOMPARE(m_window->simulation()->history().size(), std::size_t(5));
+}
+
+void TestMainWindow::everyDemoSceneRenders_data() {
+    QTest::addColumn<QString>("path");
+    QDir dir(INTERPLAY_SOURCE_DIR "/scenes");
+    for (const QString& name : dir.entryList({"*.json"}, QDir::Files)) QTest::newRow(qPrintable(name)) << dir.filePath(name);
+    QDir thesis(INTERPLAY_SOURCE_DIR "/scenes/thesis");
+    for (const QString& name : thesis.entryList({"*.json"}, QDir::Files)) {
+        QTest::newRow(qPrintable("thesis/" + name)) << thesis.filePath(name);
+    }
+}
+
+void TestMainWindow::everyDemoSceneRenders() {
+    QFETCH(QString, path);
+    QString error;
+    QVERIFY2(m_window->openFile(path, &error), qPrintable(error));
+    m_window->simulation()->stepFrames(10);
+    const QImage image = m_window->viewport()->grabViewport();
+    QVERIFY(!image.isNull());
+    const int colors = distinctColors(image);
+    QVERIFY2(colors > 200, qPrintable(QString("%1: only %2 colours").arg(path).arg(colors)));
+    // Something other than sky and floor: a picked ray through the middle third hits a body.
+    int hits = 0;
+    interplay::Viewport* viewport = m_window->viewport();
+    for (int y = 1; y < 6; ++y) {
+        for (int x = 1; x < 6; ++x) {
+            if (viewport->pick(QPointF(viewport->width() * x / 6.0, viewport->height() * y / 6.0))) ++hits;
+        }
+    }
+    QVERIFY2(hits > 0, qPrintable(path + ": no body in view"));
+}
+
+// The viewport needs GL 3.3 core, set before the application creates any window (as main() does).
+int main(int argc, char* argv[]) {
+    QSurfaceFormat::setDefaultFormat(interplay::Viewport::requiredSurfaceFormat());
+    QApplication app(argc, argv);
+    TestMainWindow test;
+    return QTest::qExec(&test, argc, argv);
+}
+
+#include "test_main_window.moc"
