@@ -372,6 +372,9 @@ int run(const Options& options) {
 
     // Presets.
     md << "## Quality presets\n\n";
+    md << "Named points of the front (`simcore/world/quality_preset.h`): a scene selects one with `\"preset\"` in its "
+          "settings (applied first; the scene's explicit keys override it), the runner with `--preset NAME`. Balanced "
+          "is the engine's defaults.\n\n";
     md << "| preset | knobs |\n|---|---|\n";
     for (simcore::QualityPreset preset : simcore::kQualityPresets) {
         Knobs k;

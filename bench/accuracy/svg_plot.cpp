@@ -112,7 +112,7 @@ std::string renderSvg(const Plot& plot) {
     add("<rect width=\"100%\" height=\"100%\" fill=\"white\"/>");
     add("<text x=\"" + number(kWidth / 2) + "\" y=\"24\" text-anchor=\"middle\" font-size=\"16\" font-weight=\"bold\">" +
         escape(plot.title) + "</text>");
-    add("<text x=\"" + number(kWidth / 2) + "\" y=\"44\" text-anchor=\"middle\" fill=\"#444\">" + escape(plot.subtitle) +
+    add("<text x=\"" + number(kWidth / 2) + "\" y=\"44\" text-anchor=\"middle\" font-size=\"11\" fill=\"#444\">" + escape(plot.subtitle) +
         "</text>");
 
     // Grid lines and ticks: every decade labelled; 2 and 5 labelled too on short axes.

@@ -48,18 +48,7 @@ BodyId BodyStorage::add(const BodyCreationSettings& settings, const MassProperti
     bounds.push_back(worldBounds(settings.shape, Transform{settings.position, q}));
     refreshInverseInertiaWorld(dense);
 
-    std::uint32_t slot;
-    if (!freeSlots_.empty()) {
-        slot = freeSlots_.back();
-        freeSlots_.pop_back();
-    } else {
-        slot = static_cast<std::uint32_t>(slotToDense_.size());
-        slotToDense_.push_back(0);
-        slotGeneration_.push_back(0);
-    }
-    slotToDense_[slot] = static_cast<std::uint32_t>(dense);
-    denseToSlot_.push_back(slot);
-    return {slot, slotGeneration_[slot]};
+    return slots_.add();
 }
 
 void BodyStorage::remove(BodyId id) {
@@ -67,28 +56,11 @@ void BodyStorage::remove(BodyId id) {
     assert(dense >= 0);
     if (dense < 0) return;
     const auto i = static_cast<std::size_t>(dense);
-
-    const std::uint32_t movedSlot = denseToSlot_.back();
     swapRemove(i, centerOfMass, orientation, linearVelocity, angularVelocity, force, torque, mass,
                inverseMass, inertiaLocal, inverseInertiaLocal, inverseInertiaWorld,
                localCenterOfMass, motion, shape, friction, restitution, ccd, awake, sleepTime,
-               name, proxy, bounds, denseToSlot_);
-    slotToDense_[movedSlot] = static_cast<std::uint32_t>(i);
-
-    ++slotGeneration_[id.index];  // stale handles to this slot now fail denseIndex()
-    freeSlots_.push_back(id.index);
-}
-
-int BodyStorage::denseIndex(BodyId id) const {
-    if (id.index >= slotToDense_.size() || slotGeneration_[id.index] != id.generation) return -1;
-    const std::uint32_t dense = slotToDense_[id.index];
-    if (dense >= denseToSlot_.size() || denseToSlot_[dense] != id.index) return -1;
-    return static_cast<int>(dense);
-}
-
-BodyId BodyStorage::idAt(std::size_t dense) const {
-    const std::uint32_t slot = denseToSlot_[dense];
-    return {slot, slotGeneration_[slot]};
+               name, proxy, bounds);
+    slots_.removeAt(i);
 }
 
 void BodyStorage::refreshInverseInertiaWorld(std::size_t i) {

@@ -4,6 +4,7 @@
 // body (swap with the last, pop) never invalidates other handles.
 
 #include "simcore/dynamics/body.h"
+#include "simcore/dynamics/slot_map.h"
 
 #include <string>
 #include <vector>
@@ -43,19 +44,16 @@ public:
     void remove(BodyId id);
 
     // Dense index of a live body, or -1 for a stale or invalid id.
-    int denseIndex(BodyId id) const;
-    BodyId idAt(std::size_t denseIndex) const;
-    std::size_t denseIndexOfSlot(std::uint32_t slot) const { return slotToDense_[slot]; }  // slot must be live
+    int denseIndex(BodyId id) const { return slots_.denseIndex(id); }
+    BodyId idAt(std::size_t denseIndex) const { return slots_.idAt(denseIndex); }
+    std::size_t denseIndexOfSlot(std::uint32_t slot) const { return slots_.denseIndexOfSlot(slot); }  // slot must be live
 
     Vec3 origin(std::size_t i) const { return centerOfMass[i] - orientation[i] * localCenterOfMass[i]; }
     Transform transform(std::size_t i) const { return {origin(i), orientation[i]}; }
     void refreshInverseInertiaWorld(std::size_t i);
 
 private:
-    std::vector<std::uint32_t> denseToSlot_;
-    std::vector<std::uint32_t> slotToDense_;
-    std::vector<std::uint32_t> slotGeneration_;
-    std::vector<std::uint32_t> freeSlots_;
+    SlotMap<BodyId> slots_;
 };
 
 }  // namespace simcore

@@ -84,22 +84,9 @@ JointId JointStorage::add(const JointCreationSettings& s, const BodyStorage& bod
     j.maxLength = lengths.max;
     j.collideConnected = s.collideConnected;
 
-    const std::size_t dense = joints.size();
     joints.push_back(j);
     names.push_back(s.name);
-
-    std::uint32_t slot;
-    if (!freeSlots_.empty()) {
-        slot = freeSlots_.back();
-        freeSlots_.pop_back();
-    } else {
-        slot = static_cast<std::uint32_t>(slotToDense_.size());
-        slotToDense_.push_back(0);
-        slotGeneration_.push_back(0);
-    }
-    slotToDense_[slot] = static_cast<std::uint32_t>(dense);
-    denseToSlot_.push_back(slot);
-    return {slot, slotGeneration_[slot]};
+    return slots_.add();
 }
 
 void JointStorage::remove(JointId id) {
@@ -107,30 +94,13 @@ void JointStorage::remove(JointId id) {
     assert(dense >= 0);
     if (dense < 0) return;
     const auto i = static_cast<std::size_t>(dense);
-    const std::uint32_t movedSlot = denseToSlot_.back();
     if (i + 1 != joints.size()) {
         joints[i] = joints.back();
         names[i] = std::move(names.back());
-        denseToSlot_[i] = movedSlot;
     }
     joints.pop_back();
     names.pop_back();
-    denseToSlot_.pop_back();
-    slotToDense_[movedSlot] = static_cast<std::uint32_t>(i);
-    ++slotGeneration_[id.index];  // stale handles to this slot now fail denseIndex()
-    freeSlots_.push_back(id.index);
-}
-
-int JointStorage::denseIndex(JointId id) const {
-    if (id.index >= slotToDense_.size() || slotGeneration_[id.index] != id.generation) return -1;
-    const std::uint32_t dense = slotToDense_[id.index];
-    if (dense >= denseToSlot_.size() || denseToSlot_[dense] != id.index) return -1;
-    return static_cast<int>(dense);
-}
-
-JointId JointStorage::idAt(std::size_t dense) const {
-    const std::uint32_t slot = denseToSlot_[dense];
-    return {slot, slotGeneration_[slot]};
+    slots_.removeAt(i);
 }
 
 JointBodyPose JointStorage::poseOf(BodyId body, const BodyStorage& bodies) const {

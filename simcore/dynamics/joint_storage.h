@@ -6,6 +6,7 @@
 
 #include "simcore/dynamics/body_storage.h"
 #include "simcore/dynamics/joint.h"
+#include "simcore/dynamics/slot_map.h"
 
 #include <limits>
 #include <string>
@@ -78,18 +79,15 @@ public:
     JointId add(const JointCreationSettings& settings, const BodyStorage& bodies);
     void remove(JointId id);
 
-    int denseIndex(JointId id) const;  // -1 for a stale or invalid id
-    JointId idAt(std::size_t denseIndex) const;
+    int denseIndex(JointId id) const { return slots_.denseIndex(id); }  // -1 for a stale or invalid id
+    JointId idAt(std::size_t denseIndex) const { return slots_.idAt(denseIndex); }
 
     JointBodyPose poseOf(BodyId body, const BodyStorage& bodies) const;
     // Worst position (m) and angle (rad) error of a joint, limits included.
     JointError error(std::size_t denseIndex, const BodyStorage& bodies) const;
 
 private:
-    std::vector<std::uint32_t> denseToSlot_;
-    std::vector<std::uint32_t> slotToDense_;
-    std::vector<std::uint32_t> slotGeneration_;
-    std::vector<std::uint32_t> freeSlots_;
+    SlotMap<JointId> slots_;
 };
 
 }  // namespace simcore

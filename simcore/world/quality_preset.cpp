@@ -16,7 +16,7 @@ struct PresetKnobs {
 
 // Points of the front measured over all reference scenes (bench/results/accuracy.md, "Across all
 // scenes"); Balanced is WorldSettings' defaults.
-//  - Fast: half the substeps and a second relax pass: about 0.7x Balanced's cost for about 2.3x its
+//  - Fast: half the substeps and a second relax pass: 0.75-0.8x Balanced's cost for about 2.4x its
 //    error (at most 4x on any scene). With one relax pass a 16-cube tower drifts 3x as far (and,
 //    not coming to rest, costs more). Contacts and joints get the engine's cap at this substep
 //    rate, 30 Hz. (A 1/30 s step in 4 substeps measured about the same for a little less, but
