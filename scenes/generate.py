@@ -653,6 +653,26 @@ def pendulums():
 # ----------------------------------------------------------------------------------------------
 
 
+def bullets_vs_walls():
+    """Continuous collision on show. A 0.1 m ball (10 g) at 300 m/s, 5 m a step, at a 0.1 m thick
+    wall; a second one flagged "ccd" at 600 m/s; and a 4 cm plank spinning at 40 rad/s thrown at
+    150 m/s into a stack of three 1 m cubes. None may pass through."""
+    bodies = [ground(half=(20, 0.5, 20), color=GROUND_COLOR)]
+    bodies.append(body("wall", box(0.05, 1.5, 3), [0, 1.5, -1.5], motion="static", color=[0.6, 0.6, 0.65]))
+    bodies.append(body("ball at 300 m/s", sphere(0.05), [-8, 1, -2.5], mass=0.01, color=[0.95, 0.4, 0.3],
+                       linear_velocity=[300, 0, 0]))
+    flagged = body("ball at 600 m/s (ccd)", sphere(0.05), [-8, 2, -0.5], mass=0.01, color=[0.95, 0.7, 0.3],
+                   linear_velocity=[600, 0, 0])
+    flagged["ccd"] = True
+    bodies.append(flagged)
+    for level in range(3):
+        bodies.append(body("stack %d" % (level + 1), UNIT_CUBE, [0, 0.5 + level, 4], friction=0.6,
+                           color=hsv(0.55 + 0.05 * level)))
+    bodies.append(body("plank", box(0.02, 0.3, 0.3), [-8, 1.5, 4], mass=1, color=[0.5, 0.8, 0.45],
+                       linear_velocity=[150, 0, 0], angular_velocity=[0, 0, 40]))
+    return scene(settings(), bodies)
+
+
 def all_scenes():
     return {
         "bench/pile1k.json": pile1k(False),
@@ -673,6 +693,7 @@ def all_scenes():
         "hinge_door.json": hinge_door(),
         "ragdoll.json": ragdoll(),
         "pendulums.json": pendulums(),
+        "bullets_vs_walls.json": bullets_vs_walls(),
     }
 
 

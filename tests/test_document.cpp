@@ -511,7 +511,7 @@ void TestDocument::settingsModelPushesAndRejects() {
     QVERIFY(changed.count() >= 1);
     QCOMPARE(model.preset(), -1);  // 7 substeps is no preset
 
-    model.setPreset(2);  // Precise
+    model.setPreset(2);  // Accurate
     QCOMPARE(model.preset(), 2);
     QCOMPARE(m_document.scene().settings.substeps, 8);
 

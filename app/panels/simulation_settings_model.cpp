@@ -2,8 +2,7 @@
 
 #include "app/document/scene_document.h"
 #include "app/document/undo_commands.h"
-#include "app/simulation/quality_presets.h"
-
+#include "simcore/world/quality_preset.h"
 #include "simcore/world/world.h"
 
 #include <QUndoStack>
@@ -34,7 +33,10 @@ int SimulationSettingsModel::positionIterations() const { return settings().solv
 int SimulationSettingsModel::positionCorrection() const { return static_cast<int>(settings().solver.positionCorrection); }
 double SimulationSettingsModel::linearDamping() const { return settings().damping.linear; }
 double SimulationSettingsModel::angularDamping() const { return settings().damping.angular; }
-int SimulationSettingsModel::preset() const { return matchingPreset(settings()); }
+int SimulationSettingsModel::preset() const {
+    const std::optional<simcore::QualityPreset> matching = simcore::matchingQualityPreset(settings());
+    return matching ? static_cast<int>(*matching) : -1;  // -1: custom settings
+}
 
 QStringList SimulationSettingsModel::positionCorrectionNames() const {
     return {tr("Soft step"), tr("Baumgarte")};
@@ -56,7 +58,10 @@ QVariantList SimulationSettingsModel::effects() const {
 
 QStringList SimulationSettingsModel::presetNames() const {
     QStringList names;
-    for (const QualityPreset& preset : kQualityPresets) names << tr(preset.name);
+    for (simcore::QualityPreset preset : simcore::kQualityPresets) {
+        const QString name = QString::fromLatin1(simcore::qualityPresetName(preset));
+        names << name.left(1).toUpper() + name.mid(1);
+    }
     return names;
 }
 
@@ -119,9 +124,10 @@ void SimulationSettingsModel::setAngularDamping(double rate) {
 }
 
 void SimulationSettingsModel::setPreset(int preset) {
-    if (preset < 0 || preset >= static_cast<int>(kQualityPresets.size())) return;
-    const QualityPreset& chosen = kQualityPresets[static_cast<std::size_t>(preset)];
-    push(tr("Quality %1").arg(tr(chosen.name)), QStringLiteral("preset"), withPreset(settings(), chosen));
+    if (preset < 0 || preset >= static_cast<int>(simcore::kQualityPresets.size())) return;
+    simcore::WorldSettings after = settings();
+    simcore::applyQualityPreset(after, simcore::kQualityPresets[static_cast<std::size_t>(preset)]);
+    push(tr("Quality %1").arg(presetNames().at(preset)), QStringLiteral("preset"), after);
 }
 
 void SimulationSettingsModel::setInteracting(bool interacting) {
