@@ -8,4 +8,14 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 source "$root/scripts/sanitizer-build.sh"
 configure_asan_build
 cmake --build "$asan_build"
-ctest --test-dir "$asan_build" --output-on-failure --timeout 900 "$@"
+if [ $# -gt 0 ]; then
+    exec ctest --test-dir "$asan_build" --output-on-failure --timeout 900 "$@"
+fi
+# Two passes: every suite but the windowed ones with LeakSanitizer, then the windowed ones (label
+# gui) without it: Mesa's driver is unloaded before the leak check, so its caches show up as leaks
+# from "<unknown module>" that no suppression can name. ASan and UBSan stay on in both.
+status=0
+ctest --test-dir "$asan_build" --output-on-failure --timeout 900 -LE gui || status=1
+ASAN_OPTIONS="${ASAN_OPTIONS/detect_leaks=1/detect_leaks=0}" \
+    ctest --test-dir "$asan_build" --output-on-failure --timeout 900 -L gui || status=1
+exit $status

@@ -1,6 +1,43 @@
 #!/usr/bin/env bash
-# Installs, builds and runs every test through ctest.
-set -euo pipefail
+# Installs, builds and runs every test, in three stages that each also run alone:
+#   1. the ctest suites, Release (build/);
+#   2. the same suites under AddressSanitizer + UndefinedBehaviorSanitizer (scripts/test-sanitizers.sh,
+#      build-asan/);
+#   3. a short libFuzzer run of every fuzz target (scripts/fuzz.sh; FUZZ_SECONDS=N per target, default 30
+#      here, 60 when fuzz.sh runs alone).
+# Every stage runs even when an earlier one fails, so one run shows every failure; the exit code is
+# non-zero if any stage failed.
+set -uo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-"$root/scripts/build.sh"
-ctest --test-dir "$root/build" --output-on-failure --timeout 900
+logs="$(mktemp -d)"
+trap 'rm -rf "$logs"' EXIT
+
+"$root/scripts/build.sh" || exit 1
+
+failed_stages=()
+stage() {  # stage NAME COMMAND...: runs it, its output to the terminal and to $logs/NAME
+    local name="$1"
+    shift
+    echo "== $name"
+    "$@" 2>&1 | tee "$logs/$name"
+    local status=${PIPESTATUS[0]}
+    [ "$status" -eq 0 ] || failed_stages+=("$name")
+}
+stage release ctest --test-dir "$root/build" --output-on-failure --timeout 900
+stage sanitizers "$root/scripts/test-sanitizers.sh"
+stage fuzz "$root/scripts/fuzz.sh" "${FUZZ_SECONDS:-30}"  # 30 s per target here: the CI time budget
+
+# ctest's "N% tests passed, F tests failed out of T" and fuzz.sh's "fuzz: P passed, F failed".
+ctest_counts() {  # summed over every ctest run of the stage (the sanitizer stage has two)
+    sed -n 's/.*tests passed, \([0-9]*\) tests\{0,1\} failed out of \([0-9]*\).*/\2 \1/p' "$logs/$1" |
+        awk '{t += $1; f += $2} END {if (NR) print t - f, f}'
+}
+read -r rp rf < <(ctest_counts release; echo "0 1")
+read -r ap af < <(ctest_counts sanitizers; echo "0 1")
+read -r fp ff < <(sed -n 's/^fuzz: \([0-9]*\) passed, \([0-9]*\) failed.*/\1 \2/p' "$logs/fuzz"; echo "0 1")
+echo "Release: $rp passed, $rf failed; ASan+UBSan: $ap passed, $af failed; fuzz targets: $fp passed, $ff failed"
+if [ ${#failed_stages[@]} -gt 0 ]; then
+    echo "failed stages: ${failed_stages[*]}"
+fi
+echo "all: $((rp + ap + fp)) passed, $((rf + af + ff)) failed"
+[ ${#failed_stages[@]} -eq 0 ]
