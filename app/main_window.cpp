@@ -156,6 +156,9 @@ MainWindow::MainWindow(QWidget* parent)
 }
 
 MainWindow::~MainWindow() {
+    // The document (a child, destroyed after this destructor) clears its undo stack as it goes,
+    // which emits indexChanged: it must not reach syncSimulation on a half-destroyed window.
+    m_document->undoStack()->disconnect(this);
     // The QML panel goes first: its bindings read the settings model and the controller, which
     // are children of this window and would otherwise be destroyed under it.
     delete m_settingsPanel;

@@ -11,11 +11,8 @@ cmake --build "$asan_build"
 if [ $# -gt 0 ]; then
     exec ctest --test-dir "$asan_build" --output-on-failure --timeout 900 "$@"
 fi
-# Two passes: every suite but the windowed ones with LeakSanitizer, then the windowed ones (label
-# gui) without it: Mesa's driver is unloaded before the leak check, so its caches show up as leaks
-# from "<unknown module>" that no suppression can name. ASan and UBSan stay on in both.
-status=0
-ctest --test-dir "$asan_build" --output-on-failure --timeout 900 -LE gui || status=1
-ASAN_OPTIONS="${ASAN_OPTIONS/detect_leaks=1/detect_leaks=0}" \
-    ctest --test-dir "$asan_build" --output-on-failure --timeout 900 -L gui || status=1
-exit $status
+# The windowed suites (label gui) run in the Release stage only: under ASan they cost minutes of the
+# suite's budget, and Mesa's driver, unloaded before the leak check, shows up as leaks no
+# suppression can name. The long stability case (label long) would take many minutes instrumented.
+# Run either here on demand, e.g. ./scripts/test-sanitizers.sh -L gui (with detect_leaks=0).
+exec ctest --test-dir "$asan_build" --output-on-failure --timeout 900 -LE "gui|long"

@@ -29,7 +29,10 @@ SceneDocument::SceneDocument(QObject* parent)
     connect(m_undoStack, &QUndoStack::cleanChanged, this, [this](bool clean) { emit modifiedChanged(!clean); });
 }
 
-SceneDocument::~SceneDocument() = default;
+SceneDocument::~SceneDocument() {
+    // The undo stack (a child, destroyed after this destructor) emits cleanChanged as it clears.
+    m_undoStack->disconnect(this);
+}
 
 QString SceneDocument::displayName() const {
     if (!m_filePath.isEmpty()) return QFileInfo(m_filePath).fileName();

@@ -302,6 +302,9 @@ Viewport::Viewport(QWidget* parent) : QOpenGLWidget(parent) {
 }
 
 Viewport::~Viewport() {
+    // ~QOpenGLWidget destroys the context after this destructor, and the context then emits
+    // aboutToBeDestroyed: it must not call cleanup() on a half-destroyed Viewport.
+    if (QOpenGLContext* c = context()) disconnect(c, &QOpenGLContext::aboutToBeDestroyed, this, &Viewport::cleanup);
     cleanup();
 }
 

@@ -159,10 +159,11 @@ std::optional<SceneBody> readObject(Reader& r, const Json& o, const std::string&
         if (r.expectObject(*orientation, p)) {
             r.checkKeys(*orientation, p, {"pitch", "yaw", "roll"});
             float pitch = 0.0f, yaw = 0.0f, roll = 0.0f;
-            const bool ok = r.optionalFloat(*orientation, p, "pitch", kAngleDegrees, pitch) &
-                            r.optionalFloat(*orientation, p, "yaw", kAngleDegrees, yaw) &
-                            r.optionalFloat(*orientation, p, "roll", kAngleDegrees, roll);
-            if (ok) b.orientation = eulerDegrees(pitch, yaw, roll);
+            // Each read on its own line so that every bad angle is reported, not just the first.
+            const bool pitchOk = r.optionalFloat(*orientation, p, "pitch", kAngleDegrees, pitch);
+            const bool yawOk = r.optionalFloat(*orientation, p, "yaw", kAngleDegrees, yaw);
+            const bool rollOk = r.optionalFloat(*orientation, p, "roll", kAngleDegrees, roll);
+            if (pitchOk && yawOk && rollOk) b.orientation = eulerDegrees(pitch, yaw, roll);
         }
     }
 
