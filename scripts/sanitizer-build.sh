@@ -1,6 +1,7 @@
 # Sourced by test-sanitizers.sh and fuzz.sh: the one sanitizer build both use (build-asan/), so
 # whichever runs second finds it built. clang, AddressSanitizer + UndefinedBehaviorSanitizer on every
-# target, libFuzzer targets on top; the benchmarks are left out.
+# target, libFuzzer targets on top; the benchmarks and the editor are left out (the editor's suites
+# run in the Release stage).
 #   INTERPLAY_ASAN_BUILD=DIR   build directory (default: build-asan/ in the source tree)
 
 asan_build="${INTERPLAY_ASAN_BUILD:-$root/build-asan}"
@@ -9,7 +10,7 @@ configure_asan_build() {
     # -O1 keeps the build and the instrumented run quick; line tables make reports name file:line.
     cmake -S "$root" -B "$asan_build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
         -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only" \
-        -DINTERPLAY_SANITIZE=ON -DINTERPLAY_FUZZ=ON -DINTERPLAY_BENCH=OFF >/dev/null
+        -DINTERPLAY_SANITIZE=ON -DINTERPLAY_FUZZ=ON -DINTERPLAY_BENCH=OFF -DINTERPLAY_EDITOR=OFF >/dev/null
 }
 
 # Every sanitizer report is fatal (the build also compiles with -fno-sanitize-recover=all).
