@@ -460,10 +460,9 @@ def newtons_cradle():
     moves at 2 m/s toward the others. Resting them on a floor would mix floor contacts (and their
     friction and restitution) into what should be a pure sphere-sphere chain, so the scene is in
     zero gravity: the spheres float 1 m above a floor they never touch. Two static end walls
-    (restitution 1, 1.5 m beyond each end) send the ball that leaves back. It shows a known limit:
-    impacts along a touching chain within one step are solved together and restitution applies once
-    per step, so about half the 2 J is lost (README, open problems); balls a few cm apart, as in
-    test_hard_cases, keep it all. Sleep is off."""
+    (restitution 1, 1.5 m beyond each end) send the ball that leaves back. Each impact crosses the
+    row as a sequence of two-body collisions, so the 2 J stay in one moving ball at a time, run
+    after run. Sleep is off."""
     r = 0.25
     y = 1.0
     bodies = [ground(half=(10, 0.5, 10), color=GROUND_COLOR, name="floor (not touched: zero gravity)")]

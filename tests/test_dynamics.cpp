@@ -1,7 +1,8 @@
-// Free-body dynamics against closed forms. Semi-implicit Euler with step h has a known, exact
-// discrete solution under constant acceleration, x_n = x0 + v0 t + 1/2 g t^2 + 1/2 g h t, so the
-// tests assert both that discrete answer (to float rounding) and the bound |error| <= 1/2 |g| h t
-// against the continuous one.
+// Free-body dynamics against closed forms. Under constant acceleration each integrator with step h
+// has a known, exact discrete solution, x_n = x0 + v0 t + 1/2 g t^2 + c g h t with c = 1/2 for
+// semi-implicit Euler, -1/2 for explicit Euler and 0 for velocity Verlet, so the tests assert both
+// that discrete answer (to float rounding) and the bound |error| <= 1/2 |g| h t against the
+// continuous one.
 
 #include "simcore/world/world.h"
 
@@ -10,6 +11,8 @@
 #include <cmath>
 
 using namespace simcore;
+
+Q_DECLARE_METATYPE(simcore::Integrator)
 
 namespace {
 
@@ -57,20 +60,34 @@ void TestDynamics::projectileMatchesDiscreteAndContinuousSolutions_data() {
     QTest::addColumn<float>("dt");
     QTest::addColumn<int>("substeps");
     QTest::addColumn<QVector<float>>("velocity");
-    QTest::newRow("free fall 60 Hz") << 1.0f / 60.0f << 1 << QVector<float>{0, 0, 0};
-    QTest::newRow("projectile 60 Hz") << 1.0f / 60.0f << 1 << QVector<float>{3, 5, -2};
-    QTest::newRow("projectile 60 Hz, 4 substeps") << 1.0f / 60.0f << 4 << QVector<float>{3, 5, -2};
-    QTest::newRow("projectile 240 Hz") << 1.0f / 240.0f << 1 << QVector<float>{-1, 12, 0.5f};
+    QTest::addColumn<Integrator>("integrator");
+    QTest::addColumn<float>("offsetPerGht");  // c in the discrete solution's c g h t
+    const struct {
+        Integrator method;
+        float offset;
+    } integrators[] = {{Integrator::SymplecticEuler, 0.5f}, {Integrator::ExplicitEuler, -0.5f},
+                       {Integrator::VelocityVerlet, 0.0f}};
+    for (const auto& [method, offset] : integrators) {
+        const std::string name(integratorName(method));
+        auto row = [&](const char* label) -> QTestData& { return QTest::newRow((name + ", " + label).c_str()); };
+        row("free fall 60 Hz") << 1.0f / 60.0f << 1 << QVector<float>{0, 0, 0} << method << offset;
+        row("projectile 60 Hz") << 1.0f / 60.0f << 1 << QVector<float>{3, 5, -2} << method << offset;
+        row("projectile 60 Hz, 4 substeps") << 1.0f / 60.0f << 4 << QVector<float>{3, 5, -2} << method << offset;
+        row("projectile 240 Hz") << 1.0f / 240.0f << 1 << QVector<float>{-1, 12, 0.5f} << method << offset;
+    }
 }
 
 void TestDynamics::projectileMatchesDiscreteAndContinuousSolutions() {
     QFETCH(float, dt);
     QFETCH(int, substeps);
     QFETCH(QVector<float>, velocity);
+    QFETCH(Integrator, integrator);
+    QFETCH(float, offsetPerGht);
 
     WorldSettings settings;
     settings.timeStep = dt;
     settings.substeps = substeps;
+    settings.integrator = integrator;
     settings.sleep.enabled = false;
     World world(settings);
     const Vec3 x0(1.0f, 10.0f, -3.0f);
@@ -86,7 +103,7 @@ void TestDynamics::projectileMatchesDiscreteAndContinuousSolutions() {
     const float t = static_cast<float>(steps) * dt;
     const Vec3 g = settings.gravity;
     const Vec3 continuous = x0 + v0 * t + 0.5f * g * t * t;
-    const Vec3 discrete = continuous + 0.5f * g * h * t;
+    const Vec3 discrete = continuous + offsetPerGht * g * h * t;
     const Vec3 x = world.position(id);
     const float tolerance = roundingBound(glm::length(continuous) + 20.0f, steps * substeps);
 

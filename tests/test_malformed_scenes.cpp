@@ -147,6 +147,8 @@ private:
         row("timeStep too long", v1(sphereBody, R"({"timeStep": 10})"), {"error at /settings/timeStep: timeStep must be at most 1 s"});
         row("substeps zero", v1(sphereBody, R"({"substeps": 0})"), {"error at /settings/substeps: substeps must be between 1 and 64, got 0"});
         row("substeps fractional", v1(sphereBody, R"({"substeps": 1.5})"), {"error at /settings/substeps: expected an integer, got 1.5"});
+        row("unknown integrator", v1(sphereBody, R"({"integrator": "rk4"})"),
+            {"error at /settings/integrator: unknown integrator 'rk4' (expected symplecticEuler, explicitEuler or velocityVerlet)"});
         row("iterations string", v1(sphereBody, R"({"solver": {"velocityIterations": "many"}})"),
             {"error at /settings/solver/velocityIterations: expected an integer, got a string"});
         row("iterations huge", v1(sphereBody, R"({"solver": {"positionIterations": 1e12}})"),

@@ -101,6 +101,7 @@ Scene awkwardScene() {
     s.settings.gravity = Vec3(0.1f, -1.0f / 3.0f, 1e-7f);
     s.settings.timeStep = 1.0f / 60.0f;
     s.settings.substeps = 3;
+    s.settings.integrator = Integrator::VelocityVerlet;
     s.settings.solver.velocityIterations = 17;
     s.settings.solver.positionIterations = 0;
     s.settings.solver.positionCorrection = PositionCorrection::Baumgarte;

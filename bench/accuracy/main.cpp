@@ -109,7 +109,8 @@ std::string knobsText(const Knobs& k) {
     std::string text = "dt 1/" + std::to_string(std::lround(1.0 / static_cast<double>(s.timeStep))) + " s, " +
                        std::to_string(s.substeps) + " substeps, " + std::to_string(s.solver.velocityIterations) +
                        " velocity + " + std::to_string(s.solver.positionIterations) + " relax iterations, " +
-                       std::string(simcore::positionCorrectionName(s.solver.positionCorrection));
+                       std::string(simcore::positionCorrectionName(s.solver.positionCorrection)) + ", " +
+                       std::string(simcore::integratorName(s.integrator));
     const float cap = static_cast<float>(s.substeps) / s.timeStep / 4.0f;
     text += ", contacts " + fmt("%.0f", static_cast<double>(std::min(s.solver.contactHertz, cap))) + " Hz, joints " +
             fmt("%.0f", static_cast<double>(std::min(s.joint.hertz, cap))) + " Hz";
@@ -364,9 +365,9 @@ int run(const Options& options) {
     md << "**Grid** (per scene): time step 1/30, 1/60, 1/120, 1/240 s × 1, 2, 4, 8 substeps × {velocity iterations 1, 2, "
           "4, 8 with 1 relax pass; 2 iterations with 0 or 2 relax passes; Baumgarte at 2 and 8 iterations}; contacts and "
           "joints at the stiffness cap (a quarter of the substep rate instead of 60 Hz) at 2 and 4 iterations where the "
-          "cap is above 60 Hz; each of the scene's relevant effects switched off at the default solver settings. The "
-          "integrator is not a knob: simcore has one (semi-implicit Euler, with an implicit gyroscopic step). "
-          "GJK/EPA tolerances are not swept either.";
+          "cap is above 60 Hz; the explicit Euler and velocity Verlet integrators (instead of semi-implicit Euler) at the default solver "
+          "settings; each of the scene's relevant effects switched off at the default solver settings. GJK/EPA "
+          "tolerances are not swept.";
     if (options.quick) md << " **This is the quick grid**: fewer points and shorter runs, for a smoke test.";
     md << "\n\n";
 
@@ -427,7 +428,8 @@ int run(const Options& options) {
 
     // Files: the report, every point as CSV, one plot per scene.
     std::ostringstream csv;
-    csv << "scene,knobs,timeStep,substeps,velocityIterations,positionIterations,positionCorrection,stiff,switchedOff,"
+    csv << "scene,knobs,timeStep,substeps,velocityIterations,positionIterations,positionCorrection,integrator,stiff,"
+           "switchedOff,"
            "presets,error,msPerSimulatedSecond,msPerStep,steps,repeats,onFront\n";
     for (const SceneResult& r : results) {
         for (const Point& p : r.points) {
@@ -436,7 +438,8 @@ int run(const Options& options) {
             for (const std::string& name : p.presets) presets += (presets.empty() ? "" : " ") + name;
             csv << r.scene->name << ",\"" << p.label << "\"," << fmt("%.9g", static_cast<double>(s.timeStep)) << ','
                 << s.substeps << ',' << s.solver.velocityIterations << ',' << s.solver.positionIterations << ','
-                << simcore::positionCorrectionName(s.solver.positionCorrection) << ',' << (p.knobs.stiff ? 1 : 0) << ','
+                << simcore::positionCorrectionName(s.solver.positionCorrection) << ','
+                << simcore::integratorName(s.integrator) << ',' << (p.knobs.stiff ? 1 : 0) << ','
                 << (p.knobs.switchedOff ? simcore::effectName(*p.knobs.switchedOff) : "") << ',' << presets << ','
                 << fmt("%.6g", p.error) << ',' << fmt("%.6g", p.msPerSimulatedSecond) << ',' << fmt("%.6g", p.msPerStep)
                 << ',' << p.steps << ',' << p.repeats << ',' << (p.onFront ? 1 : 0) << '\n';

@@ -19,6 +19,7 @@ WorldSettings Knobs::applyTo(WorldSettings settings) const {
     settings.solver.velocityIterations = velocityIterations;
     settings.solver.positionIterations = positionIterations;
     settings.solver.positionCorrection = positionCorrection;
+    settings.integrator = integrator;
     if (stiff) {
         // Whole hertz, so that a preset stating the same stiffness gives identical settings.
         const float quarterSubstepRate =
@@ -38,6 +39,8 @@ std::string Knobs::label() const {
         text += " p" + std::to_string(positionIterations) + " soft";
     else
         text += " baumgarte";
+    if (integrator == simcore::Integrator::ExplicitEuler) text += ", explicit Euler";
+    if (integrator == simcore::Integrator::VelocityVerlet) text += ", Verlet";
     if (stiff) text += ", stiff";
     if (switchedOff) text += ", " + std::string(simcore::effectName(*switchedOff)) + " off";
     return text;
@@ -75,6 +78,12 @@ std::vector<Knobs> sweepGrid(const ReferenceScene& scene, bool quick) {
             grid.push_back(k);
         }
     };
+    auto addIntegrators = [&](Knobs k) {
+        for (simcore::Integrator method : {simcore::Integrator::ExplicitEuler, simcore::Integrator::VelocityVerlet}) {
+            k.integrator = method;
+            grid.push_back(k);
+        }
+    };
     auto addStiff = [&](Knobs k) {
         if (!stiffnessDiffers(k)) return;
         k.stiff = true;
@@ -87,6 +96,7 @@ std::vector<Knobs> sweepGrid(const ReferenceScene& scene, bool quick) {
         grid.push_back(knobs(1.0f / 60.0f, 4, 8, defaultPosition));
         grid.push_back(knobs(1.0f / 60.0f, 4, defaultVelocity, 0, PositionCorrection::Baumgarte));
         addStiff(knobs(1.0f / 120.0f, 4, defaultVelocity, defaultPosition));
+        addIntegrators(knobs(1.0f / 60.0f, 4, defaultVelocity, defaultPosition));
         addToggles(knobs(1.0f / 60.0f, 4, defaultVelocity, defaultPosition));
         return grid;
     }
@@ -102,6 +112,7 @@ std::vector<Knobs> sweepGrid(const ReferenceScene& scene, bool quick) {
             grid.push_back(knobs(dt, substeps, 8, 0, PositionCorrection::Baumgarte));
             // Stiffer contacts and joints where the substep rate allows them.
             for (int velocity : {defaultVelocity, 4}) addStiff(knobs(dt, substeps, velocity, defaultPosition));
+            addIntegrators(knobs(dt, substeps, defaultVelocity, defaultPosition));
             addToggles(knobs(dt, substeps, defaultVelocity, defaultPosition));
         }
     }

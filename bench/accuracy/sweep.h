@@ -19,6 +19,7 @@ struct Knobs {
     int velocityIterations = 2;
     int positionIterations = 1;
     simcore::PositionCorrection positionCorrection = simcore::PositionCorrection::SoftStep;
+    simcore::Integrator integrator = simcore::Integrator::SymplecticEuler;
     // Contact and joint stiffness at their cap, a quarter of the substep rate, instead of the
     // default 60 Hz (only differs where the substep rate exceeds 240 Hz).
     bool stiff = false;
@@ -26,7 +27,7 @@ struct Knobs {
     std::optional<simcore::QualityPreset> preset;  // set: the preset's knobs replace the ones above
 
     simcore::WorldSettings applyTo(simcore::WorldSettings settings) const;
-    std::string label() const;  // "1/60 s ×4, v2 p1 soft", "preset fast", ...
+    std::string label() const;  // "1/60 s ×4, v2 p1 soft", "1/60 s ×4, v2 p1 soft, verlet", "preset fast", ...
 };
 
 // The grid: `quick` is the small CI smoke grid. Relevant effect toggles come from the scene.

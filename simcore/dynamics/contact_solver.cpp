@@ -36,13 +36,6 @@ void frictionAxes(const ContactManifold& manifold, const BodyStorage& bodies, st
     }
 }
 
-float relativeVelocity(const BodyStorage& bodies, std::size_t a, std::size_t b, const Vec3& anchorA,
-                       const Vec3& anchorB, const Vec3& axis) {
-    const Vec3 va = bodies.linearVelocity[a] + glm::cross(bodies.angularVelocity[a], anchorA);
-    const Vec3 vb = bodies.linearVelocity[b] + glm::cross(bodies.angularVelocity[b], anchorB);
-    return glm::dot(vb - va, axis);
-}
-
 float roundingRadius(const Shape& shape) {
     return shape.type == ShapeType::Sphere || shape.type == ShapeType::Capsule ? shape.radius : 0.0f;
 }
@@ -125,6 +118,40 @@ SIMCORE_SIMD_INLINE void applyImpulse(WideBodies& v, const Vec3W& linear, const 
 // Relative velocity of B's anchor with respect to A's along an axis; rA x axis and rB x axis given.
 SIMCORE_SIMD_INLINE FloatW alongAxis(const WideBodies& v, const Vec3W& axis, const Vec3W& angularA, const Vec3W& angularB) {
     return dot(v.linearB - v.linearA, axis) + dot(v.angularB, angularB) - dot(v.angularA, angularA);
+}
+
+// How far the two bodies of every lane moved and turned since prepare.
+struct PairMotionW {
+    Vec3W shift;  // B's displacement minus A's
+    RotationDeltaW turnA, turnB;
+};
+
+SIMCORE_SIMD_INLINE PairMotionW gatherMotion(const float* rows, const std::int32_t* bodyA, const std::int32_t* bodyB) {
+    FloatW a[8], b[8];
+    simd::gatherRows(rows, bodyA, a);
+    simd::gatherRows(rows, bodyB, b);
+    return {Vec3W{b[0], b[1], b[2]} - Vec3W{a[0], a[1], a[2]}, RotationDeltaW(a[4], a[5], a[6], a[7]),
+            RotationDeltaW(b[4], b[5], b[6], b[7])};
+}
+
+// A point's separation now. The anchors sit mid-gap at prepare; each body's surface is half the
+// gap away along the normal and its core (centre or segment) a rounding radius further.
+SIMCORE_SIMD_INLINE FloatW separationNow(const PairMotionW& motion, const Vec3W& normal, const Vec3W& anchorA,
+                                         const Vec3W& anchorB, FloatW baseSeparation, FloatW radiusA, FloatW radiusB) {
+    const FloatW halfGap = FloatW::splat(0.5f) * baseSeparation;
+    const Vec3W coreA = mulAdd(normal, -(halfGap + radiusA), anchorA);
+    const Vec3W coreB = mulAdd(normal, halfGap + radiusB, anchorB);
+    const Vec3W d = motion.shift + motion.turnB * coreB - motion.turnA * coreA;
+    return baseSeparation + dot(d, normal);
+}
+
+// Coulomb: scales the tangential impulse (t1, t2) into the disc of radius `limit`.
+SIMCORE_SIMD_INLINE void clampToDisc(FloatW& t1, FloatW& t2, FloatW limit) {
+    const FloatW length2 = t1 * t1 + t2 * t2;
+    const FloatW scale = select(length2 > limit * limit, limit / simd::sqrt(simd::max(length2, FloatW::splat(1e-30f))),
+                                FloatW::splat(1.0f));
+    t1 = t1 * scale;
+    t2 = t2 * scale;
 }
 
 // 1 / (J M^-1 J^T) of a row along `axis` at the two anchors; zero where neither body can move.
@@ -283,7 +310,6 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const BodyStor
                 p.tangentImpulse1.setLane(lane, glm::dot(warm.friction, tangent1));
                 p.tangentImpulse2.setLane(lane, glm::dot(warm.friction, tangent2));
             }
-            p.approachVelocity.setLane(lane, relativeVelocity(bodies, a, b, anchorA, anchorB, normal));
             maxPenetration_ = std::max(maxPenetration_, -mp.separation);
         }
     }
@@ -391,24 +417,13 @@ void ContactSolver::solve(BodyStorage& bodies, bool useBias) {
         const Vec3W normal = load(c.normal);
         const SymMat3W inverseInertiaA = load(c.inverseInertiaA), inverseInertiaB = load(c.inverseInertiaB);
 
-        // Separation now, from how far each body moved and turned since prepare.
-        FloatW motionA[8], motionB[8];
-        simd::gatherRows(motion, c.bodyA, motionA);
-        simd::gatherRows(motion, c.bodyB, motionB);
-        const Vec3W shift = Vec3W{motionB[0], motionB[1], motionB[2]} - Vec3W{motionA[0], motionA[1], motionA[2]};
-        const RotationDeltaW turnA(motionA[4], motionA[5], motionA[6], motionA[7]);
-        const RotationDeltaW turnB(motionB[4], motionB[5], motionB[6], motionB[7]);
+        const PairMotionW pairMotion = gatherMotion(motion, c.bodyA, c.bodyB);
 
         for (int i = 0; i < c.maxPointCount; ++i) {
             PointBatch& p = c.points[i];
             const Vec3W anchorA = load(p.anchorA), anchorB = load(p.anchorB);
-            // The anchors sit mid-gap; each body's surface is half the gap away along the normal
-            // and its core a rounding radius further.
-            const FloatW halfGap = FloatW::splat(0.5f) * p.baseSeparation;
-            const Vec3W coreA = mulAdd(normal, -(halfGap + c.radiusA), anchorA);
-            const Vec3W coreB = mulAdd(normal, halfGap + c.radiusB, anchorB);
-            const Vec3W d = shift + turnB * coreB - turnA * coreA;
-            const FloatW separation = p.baseSeparation + dot(d, normal);
+            const FloatW separation =
+                separationNow(pairMotion, normal, anchorA, anchorB, p.baseSeparation, c.radiusA, c.radiusB);
 
             const MaskW speculative = separation > zero;
             const FloatW arrive = separation * correction.inverseH;
@@ -428,7 +443,6 @@ void ContactSolver::solve(BodyStorage& bodies, bool useBias) {
             const FloatW accumulated = simd::max(p.normalImpulse + lambda, zero);
             const FloatW delta = accumulated - p.normalImpulse;
             p.normalImpulse = accumulated;
-            p.maxNormalImpulse = simd::max(p.maxNormalImpulse, delta);
             applyImpulse(v, normal * delta, angularA * delta, angularB * delta, c.inverseMassA, c.inverseMassB,
                          inverseInertiaA, inverseInertiaB);
         }
@@ -442,13 +456,7 @@ void ContactSolver::solve(BodyStorage& bodies, bool useBias) {
                 const Vec3W angularA2 = cross(anchorA, tangent2), angularB2 = cross(anchorB, tangent2);
                 FloatW t1 = p.tangentImpulse1 - p.tangentMass1 * alongAxis(v, tangent1, angularA1, angularB1);
                 FloatW t2 = p.tangentImpulse2 - p.tangentMass2 * alongAxis(v, tangent2, angularA2, angularB2);
-                // Coulomb: the tangential impulse lies in a disc of radius friction * normal impulse.
-                const FloatW limit = c.friction * p.normalImpulse;
-                const FloatW length2 = t1 * t1 + t2 * t2;
-                const FloatW scale =
-                    select(length2 > limit * limit, limit / simd::sqrt(simd::max(length2, FloatW::splat(1e-30f))), one);
-                t1 = t1 * scale;
-                t2 = t2 * scale;
+                clampToDisc(t1, t2, c.friction * p.normalImpulse);
                 const FloatW delta1 = t1 - p.tangentImpulse1, delta2 = t2 - p.tangentImpulse2;
                 p.tangentImpulse1 = t1;
                 p.tangentImpulse2 = t2;
@@ -462,31 +470,52 @@ void ContactSolver::solve(BodyStorage& bodies, bool useBias) {
     storeVelocities(bodies);
 }
 
-void ContactSolver::applyRestitution(BodyStorage& bodies) {
+void ContactSolver::resolveCollisions(BodyStorage& bodies) {
     loadVelocities(bodies);
+    loadMotion(bodies);
     const FloatW zero = FloatW::zero();
     const FloatW threshold = FloatW::splat(-params_.contact.restitutionThreshold);
+    const FloatW h = FloatW::splat(params_.substepDt);
     float* rows = velocities_.data()->value;
-    for (ManifoldBatch& c : batches_) {
-        if (!c.anyRestitution) continue;
-        WideBodies v = gatherVelocities(rows, c.bodyA, c.bodyB);
-        const Vec3W normal = load(c.normal);
-        const SymMat3W inverseInertiaA = load(c.inverseInertiaA), inverseInertiaB = load(c.inverseInertiaB);
-        for (int i = 0; i < c.maxPointCount; ++i) {
-            PointBatch& p = c.points[i];
-            // Only points that approached fast enough and actually pushed bounce.
-            const MaskW bounces =
-                (p.approachVelocity < threshold) & (p.maxNormalImpulse > zero) & (c.restitution > zero);
-            const Vec3W angularA = cross(load(p.anchorA), normal), angularB = cross(load(p.anchorB), normal);
-            const FloatW vn = alongAxis(v, normal, angularA, angularB);
-            const FloatW lambda = -(p.normalMass * mulAdd(c.restitution, p.approachVelocity, vn));
-            const FloatW accumulated = select(bounces, simd::max(p.normalImpulse + lambda, zero), p.normalImpulse);
-            const FloatW delta = accumulated - p.normalImpulse;
-            p.normalImpulse = accumulated;
-            applyImpulse(v, normal * delta, angularA * delta, angularB * delta, c.inverseMassA, c.inverseMassB,
-                         inverseInertiaA, inverseInertiaB);
+    const float* motion = motion_.data()->value;
+    for (int pass = 0; pass < kMaxCollisionPasses; ++pass) {
+        bool collided = false;
+        for (ManifoldBatch& c : batches_) {
+            if (!c.anyRestitution) continue;
+            WideBodies v = gatherVelocities(rows, c.bodyA, c.bodyB);
+            const PairMotionW pairMotion = gatherMotion(motion, c.bodyA, c.bodyB);
+            const Vec3W normal = load(c.normal), tangent1 = load(c.tangent1), tangent2 = load(c.tangent2);
+            const SymMat3W inverseInertiaA = load(c.inverseInertiaA), inverseInertiaB = load(c.inverseInertiaB);
+            const FloatW bounce = FloatW::splat(1.0f) + c.restitution;
+            for (int i = 0; i < c.maxPointCount; ++i) {
+                const PointBatch& p = c.points[i];
+                const Vec3W anchorA = load(p.anchorA), anchorB = load(p.anchorB);
+                const Vec3W angularA = cross(anchorA, normal), angularB = cross(anchorB, normal);
+                const FloatW vn = alongAxis(v, normal, angularA, angularB);
+                const FloatW separation =
+                    separationNow(pairMotion, normal, anchorA, anchorB, p.baseSeparation, c.radiusA, c.radiusB);
+                // A collision: closing faster than the threshold, and touching within this substep.
+                const MaskW collides = (vn < threshold) & (mulAdd(vn, h, separation) < zero) &
+                                       (c.restitution > zero) & (p.normalMass > zero);
+                if (!simd::any(collides)) continue;
+                collided = true;
+                const FloatW normalImpulse = select(collides, -(bounce * p.normalMass * vn), zero);
+                applyImpulse(v, normal * normalImpulse, angularA * normalImpulse, angularB * normalImpulse,
+                             c.inverseMassA, c.inverseMassB, inverseInertiaA, inverseInertiaB);
+                if (!c.anyFriction) continue;
+                // Friction during the impact, bounded by the impact's own normal impulse.
+                const Vec3W angularA1 = cross(anchorA, tangent1), angularB1 = cross(anchorB, tangent1);
+                const Vec3W angularA2 = cross(anchorA, tangent2), angularB2 = cross(anchorB, tangent2);
+                FloatW t1 = -(p.tangentMass1 * alongAxis(v, tangent1, angularA1, angularB1));
+                FloatW t2 = -(p.tangentMass2 * alongAxis(v, tangent2, angularA2, angularB2));
+                clampToDisc(t1, t2, c.friction * normalImpulse);
+                applyImpulse(v, mulAdd(tangent1, t1, tangent2 * t2), mulAdd(angularA1, t1, angularA2 * t2),
+                             mulAdd(angularB1, t1, angularB2 * t2), c.inverseMassA, c.inverseMassB, inverseInertiaA,
+                             inverseInertiaB);
+            }
+            scatterVelocities(rows, c.bodyA, c.bodyB, v);
         }
-        scatterVelocities(rows, c.bodyA, c.bodyB, v);
+        if (!collided) break;
     }
     storeVelocities(bodies);
 }

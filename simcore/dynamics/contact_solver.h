@@ -4,8 +4,17 @@
 // threshold, speculative contacts, and soft-step or Baumgarte position correction.
 //
 // Within one World::step the solver is used as:
-//   prepare (once) -> for each substep { warmStart, solve(useBias=true) x N, [positions move],
-//   relax = solve(useBias=false) x M } -> applyRestitution -> storeImpulses.
+//   prepare (once) -> for each substep { [resolveCollisions, first substep only], warmStart,
+//   solve(useBias=true) x N, [positions move], [resolveCollisions], relax = solve(useBias=false)
+//   x M } -> storeImpulses,
+// with resolveCollisions only when usesRestitution().
+//
+// Restitution is a collision pass before the contact solve (as in Guendelman, Bridson and Fedkiw
+// 2003): every point that closes faster than the restitution threshold and would touch within a
+// substep gets an impulse that reverses its normal velocity, times the restitution, with friction
+// bounded by that impulse; the pass repeats while anything collided, so an impact travels through
+// a row of touching bodies (Newton's cradle) as a sequence of two-body collisions instead of being
+// shared out by the contact solve. Each such collision conserves momentum and cannot add energy.
 //
 // Data parallel: prepare colours the manifolds so that no two of one colour share a moving body,
 // and packs each colour into batches of simd::kWidth manifolds, one per lane, in structure-of-
@@ -38,7 +47,7 @@ public:
     void prepare(const std::vector<Contact>& contacts, const BodyStorage& bodies, const Params& params);
     void warmStart(BodyStorage& bodies);
     void solve(BodyStorage& bodies, bool useBias);
-    void applyRestitution(BodyStorage& bodies);
+    void resolveCollisions(BodyStorage& bodies);
     void storeImpulses(std::vector<Contact>& contacts) const;
 
     std::size_t constraintCount() const { return constraintCount_; }
@@ -51,6 +60,9 @@ public:
 private:
     using FloatW = simd::FloatW;
     static constexpr int kLanes = simd::kWidth;
+    // Collision passes per substep at most: enough for an impact to cross a row of this many
+    // touching bodies in the worst solve order. Most substeps stop after the first pass.
+    static constexpr int kMaxCollisionPasses = 8;
 
     // One contact point in every lane: anchors relative to each centre of mass at prepare (world
     // axes), effective masses and accumulated impulses of its three rows.
@@ -59,8 +71,6 @@ private:
         FloatW baseSeparation;  // m, at prepare
         FloatW normalMass, tangentMass1, tangentMass2;
         FloatW normalImpulse, tangentImpulse1, tangentImpulse2;
-        FloatW maxNormalImpulse;  // largest normal impulse this step: did the point push?
-        FloatW approachVelocity;  // normal relative velocity at prepare (m/s), for restitution
     };
     // kLanes manifolds. Unused lanes and points have zero masses and so change nothing.
     struct ManifoldBatch {

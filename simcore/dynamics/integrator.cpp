@@ -28,8 +28,14 @@ Vec3 solveGyroscopic(const Quat& orientation, const Mat3& inertia, const Vec3& w
 
 }  // namespace
 
-void integrateVelocities(BodyStorage& bodies, const VelocityIntegration& params, float dt) {
+void BodyIntegrator::integrateVelocities(BodyStorage& bodies, Integrator method, const VelocityIntegration& params,
+                                         float dt) {
     const std::size_t n = bodies.size();
+    if (method != Integrator::SymplecticEuler) {
+        // Kinematic bodies too: their start velocity is their only velocity.
+        startLinear_.assign(bodies.linearVelocity.begin(), bodies.linearVelocity.end());
+        startAngular_.assign(bodies.angularVelocity.begin(), bodies.angularVelocity.end());
+    }
     for (std::size_t i = 0; i < n; ++i) {
         if (bodies.motion[i] != MotionType::Dynamic || !bodies.awake[i]) continue;
 
@@ -47,16 +53,24 @@ void integrateVelocities(BodyStorage& bodies, const VelocityIntegration& params,
     }
 }
 
-void integratePositions(BodyStorage& bodies, float dt) {
+void BodyIntegrator::integratePositions(BodyStorage& bodies, Integrator method, float dt) const {
     const std::size_t n = bodies.size();
     for (std::size_t i = 0; i < n; ++i) {
         if (bodies.motion[i] == MotionType::Static || !bodies.awake[i]) continue;
 
-        bodies.centerOfMass[i] += dt * bodies.linearVelocity[i];
+        Vec3 v = bodies.linearVelocity[i];
+        Vec3 w = bodies.angularVelocity[i];
+        if (method == Integrator::ExplicitEuler) {
+            v = startLinear_[i];
+            w = startAngular_[i];
+        } else if (method == Integrator::VelocityVerlet) {
+            v = 0.5f * (v + startLinear_[i]);
+            w = 0.5f * (w + startAngular_[i]);
+        }
+        bodies.centerOfMass[i] += dt * v;
 
         // dq/dt = 1/2 (0, w) q; the first-order update is renormalised so |q| = 1 holds to
         // rounding at every step, however long the run.
-        const Vec3& w = bodies.angularVelocity[i];
         Quat& q = bodies.orientation[i];
         const Quat spin(0.0f, w.x, w.y, w.z);
         q = glm::normalize(q + (0.5f * dt) * (spin * q));

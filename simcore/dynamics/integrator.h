@@ -1,8 +1,12 @@
 #pragma once
-// Semi-implicit (symplectic) Euler: velocities first from forces, then positions from the new
-// velocities. Only awake dynamic bodies move under forces; kinematic bodies move by their velocity.
+// Moves bodies through one substep: velocities from forces first, then - after the constraints
+// have corrected the velocities - positions, by the chosen Integrator (see world_settings.h). Only
+// awake dynamic bodies move under forces; kinematic bodies move by their velocity.
 
 #include "simcore/dynamics/body_storage.h"
+#include "simcore/world/world_settings.h"
+
+#include <vector>
 
 namespace simcore {
 
@@ -13,10 +17,16 @@ struct VelocityIntegration {
     bool gyroscopic = false;         // include the gyroscopic torque -w x (I w), implicitly
 };
 
-void integrateVelocities(BodyStorage& bodies, const VelocityIntegration& params, float dt);
+class BodyIntegrator {
+public:
+    // Updates velocities; the integrators that move by the start-of-substep velocity keep a copy.
+    void integrateVelocities(BodyStorage& bodies, Integrator method, const VelocityIntegration& params, float dt);
+    // Advances centres of mass and orientations, renormalises orientations and refreshes world-
+    // frame inverse inertia. `method` must be the one given to this substep's integrateVelocities.
+    void integratePositions(BodyStorage& bodies, Integrator method, float dt) const;
 
-// Advances centres of mass and orientations, renormalises orientations and refreshes world-frame
-// inverse inertia.
-void integratePositions(BodyStorage& bodies, float dt);
+private:
+    std::vector<Vec3> startLinear_, startAngular_;  // by dense index; reused, so the step never allocates
+};
 
 }  // namespace simcore

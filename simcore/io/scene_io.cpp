@@ -75,7 +75,7 @@ constexpr std::uintmax_t kMaxFileBytes = io_detail::kMaxTextBytes;  // far beyon
 void readSettings(Reader& r, const Json& s, const std::string& path, WorldSettings& out) {
     if (!r.expectObject(s, path)) return;
     r.checkKeys(s, path,
-                {"preset", "gravity", "timeStep", "substeps", "solver", "contact", "joint", "damping", "sleep", "effects"});
+                {"preset", "gravity", "timeStep", "substeps", "integrator", "solver", "contact", "joint", "damping", "sleep", "effects"});
     // The preset first, so that the explicit keys read below override its values.
     if (const Json* preset = Reader::find(s, "preset")) {
         const std::string p = childPath(path, "preset");
@@ -89,6 +89,20 @@ void readSettings(Reader& r, const Json& s, const std::string& path, WorldSettin
     r.optionalVec3(s, path, "gravity", limits::kGravity, out.gravity);
     r.optionalFloat(s, path, "timeStep", limits::kTimeStep, out.timeStep);
     r.optionalInt(s, path, "substeps", limits::kMinSubsteps, limits::kMaxSubsteps, out.substeps);
+    if (const Json* integrator = Reader::find(s, "integrator")) {
+        const std::string p = childPath(path, "integrator");
+        if (const auto text = r.readString(*integrator, p)) {
+            bool known = false;
+            for (Integrator method : {Integrator::SymplecticEuler, Integrator::ExplicitEuler, Integrator::VelocityVerlet}) {
+                if (*text != integratorName(method)) continue;
+                out.integrator = method;
+                known = true;
+            }
+            if (!known)
+                r.error(p, "unknown integrator '" + *text +
+                               "' (expected symplecticEuler, explicitEuler or velocityVerlet)");
+        }
+    }
 
     if (const Json* solver = Reader::find(s, "solver")) {
         const std::string p = childPath(path, "solver");
@@ -527,6 +541,7 @@ OrderedJson settingsJson(const WorldSettings& s) {
     j["gravity"] = vec3(s.gravity);
     j["timeStep"] = number(s.timeStep);
     j["substeps"] = s.substeps;
+    j["integrator"] = integratorName(s.integrator);
     j["solver"] = {{"velocityIterations", s.solver.velocityIterations},
                    {"positionIterations", s.solver.positionIterations},
                    {"positionCorrection", positionCorrectionName(s.solver.positionCorrection)},

@@ -2,7 +2,6 @@
 
 #include "simcore/collision/ray_cast.h"
 #include "simcore/collision/time_of_impact.h"
-#include "simcore/dynamics/integrator.h"
 
 #include <algorithm>
 #include <cmath>
@@ -264,10 +263,12 @@ bool World::needs(Effect effect, const Activity& activity) const {
 //   4. prepare contact and joint constraints (once per step, with last step's impulses)
 //   for each substep of h = timeStep / substeps:
 //     5. integrate velocities: gravity, external forces, gyroscopic torque, damping
-//     6. warm start, then velocity iterations with position correction (joints, then contacts)
-//     7. integrate positions: centres of mass and orientations from the new velocities
-//     8. relax iterations: the same constraints without the push, so it does not become bounce
-//   9. restitution, and impulses stored for the next step's warm start
+//     6. warm start, then velocity iterations with position correction (joints, then contacts);
+//        collisions (restitution) first in the first substep
+//     7. integrate positions: centres of mass and orientations, by the chosen integrator
+//     8. collisions (restitution), then relax iterations: the same constraints without the push,
+//        so it does not become bounce
+//   9. impulses stored for the next step's warm start
 //  10. continuous collision: a fast body that would pass through another stops at the time of impact
 //  11. sleep: islands that stayed slow long enough stop being simulated
 // Stages 1-4, 6 and 8-9 run only when contacts or joints are needed; see needs() for every effect.
@@ -332,14 +333,16 @@ void World::step() {
     // Joints are always soft, so they always relax. In each pass joints go first and contacts
     // have the last word (Box2D v3's order): penetration shows more than joint stretch.
     const bool solveJoints = joints && jointSolver_.constraintCount() > 0;
+    const bool bounce = solveContacts && contactSolver_.usesRestitution();
 
     for (int substep = 0; substep < settings_.substeps; ++substep) {
         {
             ScopedStageTimer timer(slot(Stage::IntegrateVelocities));
-            integrateVelocities(bodies_, velocityParams, h);
+            integrator_.integrateVelocities(bodies_, settings_.integrator, velocityParams, h);
         }
         if (solveContacts || solveJoints) {
             ScopedStageTimer timer(slot(Stage::SolveConstraints));
+            if (bounce && substep == 0) contactSolver_.resolveCollisions(bodies_);
             if (solveJoints) jointSolver_.warmStart(bodies_);
             if (solveContacts) contactSolver_.warmStart(bodies_);
             for (int i = 0; i < settings_.solver.velocityIterations; ++i) {
@@ -349,7 +352,13 @@ void World::step() {
         }
         {
             ScopedStageTimer timer(slot(Stage::IntegratePositions));
-            integratePositions(bodies_, h);
+            integrator_.integratePositions(bodies_, settings_.integrator, h);
+        }
+        if (bounce) {
+            // Before relax, which would slow a body about to hit down to the speed that just closes
+            // the gap (speculative contact) and so take away the impact the bounce needs.
+            ScopedStageTimer timer(slot(Stage::SolveConstraints));
+            contactSolver_.resolveCollisions(bodies_);
         }
         if (relax || solveJoints) {
             ScopedStageTimer timer(slot(Stage::SolveConstraints));
@@ -361,7 +370,6 @@ void World::step() {
     }
     if (solveContacts) {
         ScopedStageTimer timer(slot(Stage::SolveConstraints));
-        if (contactSolver_.usesRestitution()) contactSolver_.applyRestitution(bodies_);
         contactSolver_.storeImpulses(contactManager_.contacts());
     }
     if (continuous) {
@@ -383,7 +391,7 @@ void World::step() {
     if (contacts) countEffect(Effect::Contacts);
     if (solveJoints) countEffect(Effect::Joints);
     if (solveContacts && contactSolver_.usesFriction()) countEffect(Effect::Friction);
-    if (solveContacts && contactSolver_.usesRestitution()) countEffect(Effect::Restitution);
+    if (bounce) countEffect(Effect::Restitution);
     if (sleeping) countEffect(Effect::Sleeping);
 
     StepCounters& counters = profile.counters;

@@ -6,6 +6,7 @@
 #include "simcore/collision/contact_manager.h"
 #include "simcore/dynamics/body_storage.h"
 #include "simcore/dynamics/contact_solver.h"
+#include "simcore/dynamics/integrator.h"
 #include "simcore/dynamics/islands.h"
 #include "simcore/dynamics/joint_solver.h"
 #include "simcore/dynamics/joint_storage.h"
@@ -141,6 +142,7 @@ private:
 
     WorldSettings settings_;
     BodyStorage bodies_;
+    BodyIntegrator integrator_;
     BroadPhase broadPhase_;
     ContactManager contactManager_;
     ContactSolver contactSolver_;

@@ -26,4 +26,13 @@ std::string_view positionCorrectionName(PositionCorrection method) {
     return "unknown";
 }
 
+std::string_view integratorName(Integrator integrator) {
+    switch (integrator) {
+        case Integrator::SymplecticEuler: return "symplecticEuler";
+        case Integrator::ExplicitEuler: return "explicitEuler";
+        case Integrator::VelocityVerlet: return "velocityVerlet";
+    }
+    return "unknown";
+}
+
 }  // namespace simcore

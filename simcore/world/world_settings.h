@@ -47,6 +47,21 @@ enum class PositionCorrection : std::uint8_t {
 };
 std::string_view positionCorrectionName(PositionCorrection method);  // "softStep", "baumgarte"
 
+// How a substep moves positions once constraints have set the velocities. All three update
+// velocities the same way (forces, then constraints); they differ in which velocity moves the body.
+enum class Integrator : std::uint8_t {
+    // Semi-implicit (symplectic) Euler: the end-of-substep velocity, which the constraints just
+    // made consistent. Energy stays bounded and contacts hold; the default.
+    SymplecticEuler,
+    // Explicit Euler: the start-of-substep velocity. First order and energy-gaining; kept to show
+    // what the symplectic update buys (the thesis compared the two).
+    ExplicitEuler,
+    // Velocity Verlet: the mean of start and end velocities, exact for constant forces (a free
+    // flight's parabola) but it lets bodies move half a substep against a constraint's fix.
+    VelocityVerlet,
+};
+std::string_view integratorName(Integrator integrator);  // "symplecticEuler", "explicitEuler", "velocityVerlet"
+
 struct SolverSettings {
     int velocityIterations = 2;  // sequential-impulse passes per substep
     int positionIterations = 1;  // per substep: relax passes (soft step); unused by Baumgarte
@@ -95,6 +110,7 @@ struct WorldSettings {
     Vec3 gravity{0.0f, -9.81f, 0.0f};  // m/s^2
     float timeStep = 1.0f / 60.0f;     // s, one call to World::step
     int substeps = 4;                  // the step is split into this many equal substeps
+    Integrator integrator = Integrator::SymplecticEuler;
     SolverSettings solver;
     ContactSettings contact;
     JointSettings joint;
