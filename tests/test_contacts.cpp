@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <random>
 #include <vector>
 
@@ -61,6 +62,7 @@ private slots:
     void effectSwitches();
     void restitutionRunsOnlyWhenSomePairBounces();
     void steadyStateStepDoesNotAllocate();
+    void contactCapLimitsPairsBetweenDynamicBodiesOnly();
     void longMixedRunStaysFiniteAndDoesNotGainEnergy();
 };
 
@@ -529,7 +531,36 @@ void TestContacts::steadyStateStepDoesNotAllocate() {
 }
 
 // -------------------------------------------------------------------------------------------------
-// 10. A long mixed run.
+// 10. The contact cap: twelve coincident cubes resting on the ground with a cap of 3 contacts
+// with other dynamic bodies. Every cube keeps its ground contact; no cube has more than 3 contacts
+// with other cubes; the pairs refused are counted in the step that refused them.
+
+void TestContacts::contactCapLimitsPairsBetweenDynamicBodiesOnly() {
+    WorldSettings settings = awakeSettings();
+    settings.contact.maxContactsPerBody = 3;
+    World world(settings);
+    const BodyId ground = addGround(world);
+    constexpr int kCubes = 12;
+    for (int i = 0; i < kCubes; ++i) world.createBody(cube(Vec3(0.0f, 0.5f, 0.0f)));
+    world.step();
+    QCOMPARE(world.lastStepProfile().counters.droppedPairs, std::uint32_t(kCubes * (kCubes - 1) / 2 - kCubes * 3 / 2));
+
+    std::map<std::uint32_t, int> withCubes;
+    int withGround = 0;
+    for (const Contact& contact : world.contacts()) {
+        if (contact.slotA == ground.index || contact.slotB == ground.index) {
+            ++withGround;
+            continue;
+        }
+        ++withCubes[contact.slotA];
+        ++withCubes[contact.slotB];
+    }
+    QCOMPARE(withGround, kCubes);
+    for (const auto& [slot, count] : withCubes) QVERIFY2(count <= 3, qPrintable(QString("cube %1 has %2").arg(slot).arg(count)));
+}
+
+// -------------------------------------------------------------------------------------------------
+// 11. A long mixed run.
 
 void TestContacts::longMixedRunStaysFiniteAndDoesNotGainEnergy() {
     World world(awakeSettings());

@@ -407,13 +407,18 @@ private slots:
     // ---- the crowd: 1000 bodies of every shape at one point ----
 
     // The worst case for the broad and narrow phases (every pair overlaps completely, GJK/EPA on
-    // identical shapes): 100 steps with every state finite, the report finite, memory bounded
-    // (today about 1.4 GB: some 500 000 overlapping pairs; the engine has no pair cap yet).
+    // identical shapes): 100 steps with every state finite and the report finite. The contact cap
+    // (settings.contact.maxContactsPerBody, 128) keeps the pairs at n * 128 / 2 instead of the
+    // n^2 / 2 = 500 000 that overlap, and so bounds memory (1.4 GB before the cap, about 200 MiB
+    // with it); the refused pairs are reported and warned about. The crowd's pressure still pushes
+    // a few bodies through the 1 m thick ground (the lowest reaches y = -2.3 m, -9.8 m without the
+    // cap): printed, not asserted.
     void coincidentCrowdStaysFinite() {
         // Under the sanitizers (several times slower) a smaller crowd for fewer steps runs the same
         // code paths (every pair type while the crowd is densest) in reasonable time.
         const int count = kSanitized ? 300 : 1000;
         const int steps = kSanitized ? 20 : 100;
+        const int cap = 128;
         const QString path = dir_.filePath("crowd.json");
         writeFile(path, coincidentCrowd(count));
         const Measured m = runMeasured(dir_, {path, "--steps", QString::number(steps)});
@@ -423,9 +428,20 @@ private slots:
         QVERIFY2(allFinite(report, where), ("not finite: " + where).c_str());
         QCOMPARE(report["bodies"].size(), std::size_t(count + 1));
         QCOMPARE(report["steps"].get<int>(), steps);
-        qInfo("crowd of %d: %d steps in %.1f s (%.1f ms per step), peak %.0f MiB", count, steps, m.seconds,
-              report["msPerStep"].get<double>(), m.peakMiB);
-        QVERIFY2(m.peakMiB < 2000 * kMemoryFactor, qPrintable(QString::number(m.peakMiB)));
+        const int pairs = report["counters"]["pairs"].get<int>();
+        const auto dropped = report["metrics"]["droppedPairs"].get<std::uint64_t>();
+        double lowest = 1e9;
+        for (const auto& body : report["bodies"]) lowest = std::min(lowest, body["position"][1].get<double>());
+        qInfo("crowd of %d: %d steps in %.1f s (%.1f ms per step), peak %.0f MiB, %d pairs, %llu refused, lowest "
+              "body at y = %.2f m",
+              count, steps, m.seconds, report["msPerStep"].get<double>(), m.peakMiB, pairs,
+              static_cast<unsigned long long>(dropped), lowest);
+        QVERIFY2(pairs <= count * cap / 2 + count, qPrintable(QString::number(pairs)));  // + one ground pair each
+        QVERIFY(dropped > 0);
+        QVERIFY2(m.err.find("crowd.json: warning: ") != std::string::npos &&
+                     m.err.find("settings.contact.maxContactsPerBody = 128") != std::string::npos,
+                 m.err.c_str());
+        QVERIFY2(m.peakMiB < 400 * kMemoryFactor, qPrintable(QString::number(m.peakMiB)));
     }
 
     // ---- the runner's exit 4 ----

@@ -143,6 +143,7 @@ int run(const runner::RunnerOptions& options) {
         const simcore::StepProfile& profile = world.lastStepProfile();
         for (int stage = 0; stage < simcore::kStageCount; ++stage) summary.stageMs[stage] += profile.stageMs[stage];
         summary.maxPenetration = std::max(summary.maxPenetration, profile.maxPenetration);
+        summary.droppedPairs += profile.counters.droppedPairs;
         if (world.jointCount() > 0) {
             const simcore::JointError jointError = world.worstJointError();
             summary.maxJointError.position = std::max(summary.maxJointError.position, jointError.position);
@@ -157,6 +158,11 @@ int run(const runner::RunnerOptions& options) {
         if (trace.isOpen()) trace.write(world);
     }
 
+    if (summary.droppedPairs > 0)
+        std::cerr << options.scenePath << ": warning: " << summary.droppedPairs
+                  << " overlapping pairs (summed over steps) were not made into contacts: bodies at the contact cap "
+                     "(settings.contact.maxContactsPerBody = "
+                  << world.settings().contact.maxContactsPerBody << ") pass through them\n";
     const nlohmann::ordered_json report = runner::makeReport(world, summary);
     const std::string text = report.dump(2);
     std::cout << text << '\n';

@@ -35,12 +35,13 @@ nlohmann::ordered_json makeReport(const simcore::World& world, const RunSummary&
     report["counters"] = {{"bodies", c.bodies},          {"dynamicBodies", c.dynamicBodies},
                           {"awakeBodies", c.awakeBodies}, {"pairs", c.pairs},
                           {"manifolds", c.manifolds},     {"contactPoints", c.contactPoints},
-                          {"islands", c.islands}};
+                          {"islands", c.islands},         {"droppedPairs", c.droppedPairs}};
 
     const double kinetic = world.kineticEnergy();
     const double potential = world.potentialEnergy();
     report["metrics"] = {
         {"maxPenetration", summary.maxPenetration},
+        {"droppedPairs", summary.droppedPairs},  // pairs refused by the contact cap, summed over steps
         {"kineticEnergy", kinetic},
         {"potentialEnergy", potential},
         {"totalEnergy", kinetic + potential},

@@ -20,6 +20,7 @@ struct RunSummary {
     double initialEnergy = 0.0;                              // kinetic + potential before step 1 (J)
     float maxPenetration = 0.0f;                             // deepest contact overlap seen in any step (m)
     simcore::JointError maxJointError;                       // worst joint position / angle error of any step
+    std::uint64_t droppedPairs = 0;                          // pairs refused by the contact cap, summed over steps
 };
 
 nlohmann::ordered_json makeReport(const simcore::World& world, const RunSummary& summary);

@@ -54,13 +54,24 @@ std::array<ContactImpulse, kMaxManifoldPoints> matchImpulses(const ContactManifo
 float combineFriction(float a, float b) { return std::sqrt(a * b); }
 float combineRestitution(float a, float b) { return std::max(a, b); }
 
-void ContactManager::addPairs(const std::vector<BodyPair>& pairs, const BodyStorage& bodies) {
+std::size_t ContactManager::addPairs(const std::vector<BodyPair>& pairs, const BodyStorage& bodies,
+                                     int maxContactsPerBody) {
+    std::size_t refused = 0;
+    const auto cap = static_cast<std::uint32_t>(maxContactsPerBody);
     for (const BodyPair& pair : pairs) {
         const std::uint64_t key = PairTable::key(pair.a, pair.b);
         if (pairToContact_.find(key) != PairTable::kNotFound) continue;
         const std::size_t a = bodies.denseIndexOfSlot(pair.a);
         const std::size_t b = bodies.denseIndexOfSlot(pair.b);
-        if (bodies.motion[a] != MotionType::Dynamic && bodies.motion[b] != MotionType::Dynamic) continue;
+        const bool dynamicA = bodies.motion[a] == MotionType::Dynamic;
+        const bool dynamicB = bodies.motion[b] == MotionType::Dynamic;
+        if (!dynamicA && !dynamicB) continue;
+        const std::size_t slots = std::max(pair.a, pair.b) + std::size_t{1};
+        if (contactsOfSlot_.size() < slots) contactsOfSlot_.resize(slots, 0);  // only when bodies were added
+        if (dynamicA && dynamicB && std::max(contactsOfSlot_[pair.a], contactsOfSlot_[pair.b]) >= cap) {
+            ++refused;
+            continue;
+        }
 
         Contact contact;
         contact.slotA = pair.a;
@@ -68,8 +79,14 @@ void ContactManager::addPairs(const std::vector<BodyPair>& pairs, const BodyStor
         contact.friction = combineFriction(bodies.friction[a], bodies.friction[b]);
         contact.restitution = combineRestitution(bodies.restitution[a], bodies.restitution[b]);
         pairToContact_.insert(key, static_cast<std::uint32_t>(contacts_.size()));
+        contact.dynamicPair = dynamicA && dynamicB;
         contacts_.push_back(contact);
+        if (contact.dynamicPair) {
+            ++contactsOfSlot_[pair.a];
+            ++contactsOfSlot_[pair.b];
+        }
     }
+    return refused;
 }
 
 void ContactManager::updateManifolds(const BodyStorage& bodies, const BroadPhase& broadPhase,
@@ -121,6 +138,10 @@ void ContactManager::updateManifolds(const BodyStorage& bodies, const BroadPhase
 }
 
 void ContactManager::removeAt(std::size_t index) {
+    if (contacts_[index].dynamicPair) {
+        --contactsOfSlot_[contacts_[index].slotA];
+        --contactsOfSlot_[contacts_[index].slotB];
+    }
     pairToContact_.erase(PairTable::key(contacts_[index].slotA, contacts_[index].slotB));
     if (index + 1 != contacts_.size()) {
         contacts_[index] = contacts_.back();
@@ -148,6 +169,7 @@ void ContactManager::removePair(std::uint32_t slotA, std::uint32_t slotB) {
 void ContactManager::clear() {
     contacts_.clear();
     pairToContact_.clear();
+    contactsOfSlot_.clear();
 }
 
 }  // namespace simcore

@@ -24,6 +24,7 @@ struct Contact {
     std::uint32_t slotA = 0, slotB = 0;  // body slots (BodyId::index): stable across removals
     float friction = 0.0f;               // combined: sqrt(frictionA * frictionB)
     float restitution = 0.0f;            // combined: max(restitutionA, restitutionB)
+    bool dynamicPair = false;            // both bodies dynamic at creation: counts toward their contact cap
     ContactManifold manifold;
     std::array<ContactImpulse, kMaxManifoldPoints> impulses{};
 };
@@ -35,8 +36,12 @@ float combineRestitution(float a, float b);
 
 class ContactManager {
 public:
-    // Creates contacts for new broad-phase pairs (userData = body slot) that involve a dynamic body.
-    void addPairs(const std::vector<BodyPair>& pairs, const BodyStorage& bodies);
+    // Creates contacts for new broad-phase pairs (userData = body slot) that involve a dynamic body,
+    // except a pair of dynamic bodies where one already has maxContactsPerBody contacts with other
+    // dynamic bodies (contacts with static and kinematic bodies are always made, so a crowd never
+    // falls through its floor). Returns how many pairs were refused; the broad phase offers them
+    // again when a body's fat box moves.
+    std::size_t addPairs(const std::vector<BodyPair>& pairs, const BodyStorage& bodies, int maxContactsPerBody);
 
     // Narrow phase: refreshes the manifold of every contact with an awake dynamic body, and
     // destroys contacts whose bodies' fat bounds no longer overlap. Points are kept while their
@@ -58,6 +63,7 @@ private:
 
     std::vector<Contact> contacts_;
     PairTable pairToContact_;
+    std::vector<std::uint32_t> contactsOfSlot_;  // by body slot: contacts with other dynamic bodies
 };
 
 }  // namespace simcore

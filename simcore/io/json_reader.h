@@ -153,6 +153,7 @@ inline constexpr Range kContactDistance{0.0, 10.0, false, " m"};   // speculativ
 inline constexpr Range kRestitutionThreshold{0.0, 1e4, false, " m/s"};
 inline constexpr int kMinSubsteps = 1, kMaxSubsteps = 64;
 inline constexpr int kMinVelocityIterations = 1, kMaxVelocityIterations = 1000;
+inline constexpr int kMinContactsPerBody = 1, kMaxContactsPerBody = 1000000;
 inline constexpr int kMinPositionIterations = 0, kMaxPositionIterations = 1000;
 inline constexpr std::size_t kMaxHullPoints = 4096;
 inline constexpr std::size_t kMaxBodies = kMaxArrayElements;

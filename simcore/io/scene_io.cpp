@@ -133,11 +133,13 @@ void readSettings(Reader& r, const Json& s, const std::string& path, WorldSettin
     if (const Json* contact = Reader::find(s, "contact")) {
         const std::string p = childPath(path, "contact");
         if (r.expectObject(*contact, p)) {
-            r.checkKeys(*contact, p, {"speculativeDistance", "linearSlop", "restitutionThreshold"});
+            r.checkKeys(*contact, p, {"speculativeDistance", "linearSlop", "restitutionThreshold", "maxContactsPerBody"});
             r.optionalFloat(*contact, p, "speculativeDistance", limits::kContactDistance, out.contact.speculativeDistance);
             r.optionalFloat(*contact, p, "linearSlop", limits::kContactDistance, out.contact.linearSlop);
             r.optionalFloat(*contact, p, "restitutionThreshold", limits::kRestitutionThreshold,
                             out.contact.restitutionThreshold);
+            r.optionalInt(*contact, p, "maxContactsPerBody", limits::kMinContactsPerBody, limits::kMaxContactsPerBody,
+                          out.contact.maxContactsPerBody);
         }
     }
     if (const Json* joint = Reader::find(s, "joint")) {
@@ -551,7 +553,8 @@ OrderedJson settingsJson(const WorldSettings& s) {
                    {"baumgarte", number(s.solver.baumgarte)}};
     j["contact"] = {{"speculativeDistance", number(s.contact.speculativeDistance)},
                     {"linearSlop", number(s.contact.linearSlop)},
-                    {"restitutionThreshold", number(s.contact.restitutionThreshold)}};
+                    {"restitutionThreshold", number(s.contact.restitutionThreshold)},
+                    {"maxContactsPerBody", s.contact.maxContactsPerBody}};
     j["joint"] = {{"hertz", number(s.joint.hertz)}, {"dampingRatio", number(s.joint.dampingRatio)}};
     j["damping"] = {{"linear", number(s.damping.linear)}, {"angular", number(s.damping.angular)}};
     j["sleep"] = {{"enabled", s.sleep.enabled},

@@ -28,6 +28,7 @@ struct StepCounters {
     std::uint32_t dynamicBodies = 0;
     std::uint32_t awakeBodies = 0;
     std::uint32_t pairs = 0;          // broad-phase pairs
+    std::uint32_t droppedPairs = 0;   // new overlapping pairs not made this step: a body's contact cap
     std::uint32_t manifolds = 0;      // touching pairs with contact points
     std::uint32_t contactPoints = 0;
     std::uint32_t islands = 0;

@@ -299,7 +299,7 @@ void World::step() {
     if (contacts) {
         {
             ScopedStageTimer timer(slot(Stage::BroadPhase));
-            updateBroadPhase(settings_.timeStep);
+            profile.counters.droppedPairs = static_cast<std::uint32_t>(updateBroadPhase(settings_.timeStep));
             proxiesStale_ = false;
         }
         {
@@ -416,7 +416,7 @@ void World::step() {
     lastProfile_ = profile;
 }
 
-void World::updateBroadPhase(float dt) {
+std::size_t World::updateBroadPhase(float dt) {
     for (std::size_t i = 0; i < bodies_.size(); ++i) {
         if (bodies_.motion[i] == MotionType::Static || !bodies_.awake[i]) continue;
         bodies_.bounds[i] = worldBounds(bodies_.shape[i], bodies_.transform(i));
@@ -429,7 +429,7 @@ void World::updateBroadPhase(float dt) {
             return jointFilteredPairs_.find(PairTable::key(pair.a, pair.b)) != PairTable::kNotFound;
         });
     }
-    contactManager_.addPairs(newPairs_, bodies_);
+    return contactManager_.addPairs(newPairs_, bodies_, settings_.contact.maxContactsPerBody);
 }
 
 void World::updateContacts() {

@@ -129,7 +129,7 @@ private:
     };
     Activity scanActivity() const;
     bool needs(Effect effect, const Activity& activity) const;
-    void updateBroadPhase(float dt);
+    std::size_t updateBroadPhase(float dt);  // returns the pairs refused by the contact cap
     void updateContacts();
     void recordSweepStarts();
     bool sweepFastBodies();
