@@ -2,9 +2,23 @@
 
 #include "simcore/dynamics/constraint_math.h"
 
+#include <cmath>
+
 namespace simcore {
 
 namespace {
+
+// Safety bounds on a dynamic body's velocity, far beyond anything a substep can resolve, so that
+// no instability (a violently over-constrained assembly, say) can grow a state to infinity: at
+// worst a body flies off at kMaxLinearSpeed, spinning a quarter turn per substep (Box2D bounds
+// rotation the same way).
+constexpr float kMaxLinearSpeed = 1e5f;                      // m/s, ten times the loader's limit
+constexpr float kMaxRotationPerSubstep = 0.25f * 3.14159265f;  // rad
+
+void boundSpeed(Vec3& velocity, float maxSpeed) {
+    const float speed2 = glm::dot(velocity, velocity);
+    if (speed2 > maxSpeed * maxSpeed) velocity *= maxSpeed / std::sqrt(speed2);
+}
 
 // Torque-free Euler equations I dw/dt + w x (I w) = 0 in body axes, by the implicit midpoint rule:
 // I (w1 - w0) + h wm x (I wm) = 0 with wm = (w0 + w1) / 2, solved by Newton's method from w1 = w0.
@@ -23,6 +37,12 @@ Vec3 solveGyroscopic(const Quat& orientation, const Mat3& inertia, const Vec3& w
         const Mat3 jacobian = inertia + (0.5f * dt) * (skew(wm) * inertia - skew(iwm));
         w1 -= glm::inverse(jacobian) * residual;
     }
+    // The torque is a rotation of L, so the exact step keeps the energy. Where the two Newton steps
+    // fall short (a spin too fast for the substep, as violent constraint impulses make) the result
+    // is scaled back to the energy it started with: the term may move energy between the axes,
+    // never add it.
+    const float energy0 = glm::dot(w0, inertia * w0), energy1 = glm::dot(w1, inertia * w1);
+    if (energy1 > energy0) w1 *= std::sqrt(energy0 / energy1);
     return orientation * w1;
 }
 
@@ -58,6 +78,10 @@ void BodyIntegrator::integratePositions(BodyStorage& bodies, Integrator method, 
     for (std::size_t i = 0; i < n; ++i) {
         if (bodies.motion[i] == MotionType::Static || !bodies.awake[i]) continue;
 
+        if (bodies.motion[i] == MotionType::Dynamic) {
+            boundSpeed(bodies.linearVelocity[i], kMaxLinearSpeed);
+            boundSpeed(bodies.angularVelocity[i], kMaxRotationPerSubstep / dt);
+        }
         Vec3 v = bodies.linearVelocity[i];
         Vec3 w = bodies.angularVelocity[i];
         if (method == Integrator::ExplicitEuler) {
