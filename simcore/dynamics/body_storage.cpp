@@ -33,7 +33,9 @@ BodyId BodyStorage::add(const BodyCreationSettings& settings, const MassProperti
     mass.push_back(isDynamic ? massProperties.mass : 0.0f);
     inverseMass.push_back(isDynamic ? 1.0f / massProperties.mass : 0.0f);
     inertiaLocal.push_back(isDynamic ? massProperties.inertia : Mat3(0.0f));
-    inverseInertiaLocal.push_back(isDynamic ? glm::inverse(massProperties.inertia) : Mat3(0.0f));
+    // Inverted in double: the determinant of a tiny body's tensor (a 0.1 mm bead's moments are
+    // about 4e-15 kg m^2) underflows float.
+    inverseInertiaLocal.push_back(isDynamic ? Mat3(glm::inverse(glm::dmat3(massProperties.inertia))) : Mat3(0.0f));
     inverseInertiaWorld.emplace_back(0.0f);
     localCenterOfMass.push_back(massProperties.centerOfMass);
     motion.push_back(settings.motion);

@@ -2,6 +2,7 @@
 
 #include "simcore/dynamics/constraint_math.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace simcore {
@@ -27,7 +28,11 @@ void boundSpeed(Vec3& velocity, float maxSpeed) {
 // a tumbling body neither gains nor loses energy or momentum (the explicit form pumps energy in,
 // backward Euler bleeds a few percent of |L| over seconds). Two Newton steps reach float precision
 // at any spin a step can resolve.
-Vec3 solveGyroscopic(const Quat& orientation, const Mat3& inertia, const Vec3& worldOmega, float dt) {
+Vec3 solveGyroscopic(const Quat& orientation, const Mat3& bodyInertia, const Vec3& worldOmega, float dt) {
+    // The equation is homogeneous in I, so it is solved with I scaled to a largest moment of 1:
+    // a 0.1 mm bead's moments (about 1e-15 kg m^2) would make the Jacobian's determinant underflow.
+    const float largestMoment = std::max({bodyInertia[0][0], bodyInertia[1][1], bodyInertia[2][2]});
+    const Mat3 inertia = bodyInertia * (1.0f / largestMoment);
     const Vec3 w0 = glm::conjugate(orientation) * worldOmega;
     Vec3 w1 = w0;
     for (int iteration = 0; iteration < 2; ++iteration) {

@@ -609,8 +609,7 @@ bool checkMassProperties(Reader& reader, const BodyCreationSettings& body, const
         reader.error(path, "the smallest moment of inertia of this body, " + approx(smallest) + " kg m^2 (from its mass " +
                                approx(props.mass) + " kg and its shape), is below " +
                                formatNumber(limits::kMinMomentOfInertia) +
-                               " kg m^2: a body this small and light cannot be rotated reliably in float arithmetic "
-                               "(make it larger or heavier)");
+                               " kg m^2: its inverse is beyond float arithmetic (make it larger or heavier)");
         return false;
     }
     return true;

@@ -157,11 +157,12 @@ inline constexpr int kMinContactsPerBody = 1, kMaxContactsPerBody = 1000000;
 inline constexpr int kMinPositionIterations = 0, kMaxPositionIterations = 1000;
 inline constexpr std::size_t kMaxHullPoints = 4096;
 inline constexpr std::size_t kMaxBodies = kMaxArrayElements;
-// Smallest principal moment of inertia of a dynamic body, from its shape and mass. Below it the
-// engine's float arithmetic underflows (the inertia tensor's determinant, the product of the
-// moments, becomes denormal or zero): a 0.2 mm, 1 mg box would get a non-finite orientation in its
-// first step. (No upper limit is needed: the mass and size limits keep every moment below 7e18.)
-inline constexpr double kMinMomentOfInertia = 1e-12;  // kg m^2
+// Smallest principal moment of inertia of a dynamic body, from its shape and mass: its inverse must
+// stay far inside float range. The engine inverts the tensor in double and solves the gyroscopic
+// term on a normalised tensor, so the smallest bodies the mass and size limits allow (about 4e-15
+// kg m^2) simulate; this only guards a hull thinner than any the hull builder accepts. (No upper
+// limit is needed: the mass and size limits keep every moment below 7e18.)
+inline constexpr double kMinMomentOfInertia = 1e-30;  // kg m^2
 }  // namespace limits
 
 // Quaternion from the JSON orientation value; reported at `path` when it cannot be normalised.

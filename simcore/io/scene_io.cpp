@@ -18,8 +18,7 @@
 //  - convex hulls: 4..4096 points, and ConvexHull::build must succeed.
 //  - what a dynamic body's values come to together (both formats): the mass a density gives
 //    (density x volume) in [1e-6, 1e9] kg like a given mass; the smallest principal moment of
-//    inertia at least 1e-12 kg m^2 (below it float arithmetic fails: a 0.2 mm, 1 mg box would get
-//    a NaN orientation in its first step).
+//    inertia at least 1e-30 kg m^2 (its inverse must stay inside float range).
 //  - size (json_reader.h, checked while parsing, so memory stays bounded): text up to 64 MiB;
 //    nesting depth 64; strings and keys up to 4096 bytes; arrays up to 100000 elements (so at
 //    most 100000 bodies); at most 4 million JSON values in all.
