@@ -3,7 +3,7 @@
 // Opens SCENE (or the built-in default scene) in the editor. With --screenshot it simulates N
 // frames (N fixed steps: no wall clock involved), saves what the viewport shows and exits, so
 // the real rendering can be checked headlessly; --window-screenshot saves the whole editor with
-// its docks instead. In both modes --select selects the named bodies first (outlined, shown in the Inspector),
+// its docks instead. In both modes --select selects the named bodies or joints first (outlined, shown in the Inspector),
 // --debug-draw turns overlays on, --show-settings brings the Simulation panel to the front.
 
 #include "app/document/scene_document.h"
@@ -63,7 +63,7 @@ int main(int argc, char* argv[]) {
         QStringLiteral("window-screenshot"),
         QStringLiteral("Like --screenshot, but save the whole editor window with its panels."), QStringLiteral("file"));
     const QCommandLineOption selectOption(QStringLiteral("select"),
-                                          QStringLiteral("Select the body named <name> (repeatable)."),
+                                          QStringLiteral("Select the body or joint named <name> (repeatable)."),
                                           QStringLiteral("name"));
     parser.addOption(screenshotOption);
     parser.addOption(windowScreenshotOption);
@@ -118,15 +118,20 @@ int main(int argc, char* argv[]) {
     }
 
     // View options from the command line apply to the window and to screenshots alike.
-    QList<int> selection;
+    QList<int> bodies, joints;
     for (const QString& name : parser.values(selectOption)) {
-        const qsizetype before = selection.size();
+        const qsizetype before = bodies.size() + joints.size();
         for (int i = 0; i < window.document()->bodyCount(); ++i) {
-            if (window.document()->bodyName(i) == name) selection << i;
+            if (window.document()->bodyName(i) == name) bodies << i;
         }
-        if (selection.size() == before) printError(QStringLiteral("--select: no body is named \"%1\"").arg(name));
+        for (int i = 0; i < window.document()->jointCount(); ++i) {
+            if (window.document()->jointName(i) == name) joints << i;
+        }
+        if (bodies.size() + joints.size() == before) {
+            printError(QStringLiteral("--select: no body or joint is named \"%1\"").arg(name));
+        }
     }
-    window.document()->setSelectedBodies(selection);
+    window.document()->setSelection(bodies, joints);
     const QStringList overlays = parser.value(debugDrawOption).split(u',', Qt::SkipEmptyParts);
     for (const QString& overlay : overlays) {
         const char* property = overlay == QLatin1String("aabbs")      ? "aabbs"

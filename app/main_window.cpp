@@ -44,6 +44,9 @@
 #include <QUndoStack>
 #include <QUndoView>
 
+#include <algorithm>
+#include <optional>
+
 
 namespace interplay {
 namespace {
@@ -54,6 +57,17 @@ const QString kRecentFilesKey = QStringLiteral("recentFiles");
 const QString kGeometryKey = QStringLiteral("mainWindow/geometry");
 const QString kStateKey = QStringLiteral("mainWindow/state");
 const QString kSceneFilter = QStringLiteral("Scenes (*.json);;All files (*)");
+
+// The Add Joint actions by object name, in menu order.
+struct JointAction {
+    simcore::JointType type;
+    const char* objectName;
+};
+constexpr JointAction kJointActions[] = {
+    {simcore::JointType::Ball, "addBallJoint"},   {simcore::JointType::Hinge, "addHingeJoint"},
+    {simcore::JointType::Slider, "addSliderJoint"}, {simcore::JointType::Fixed, "addFixedJoint"},
+    {simcore::JointType::Distance, "addDistanceJoint"},
+};
 
 // Size and modification time: what tells our own write apart from another program's.
 QString fileStamp(const QString& path) {
@@ -124,18 +138,38 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_document, &SceneDocument::filePathChanged, this, &MainWindow::updateTitle);
     connect(m_document, &SceneDocument::filePathChanged, this, &MainWindow::watchDocumentFile);
     connect(m_document, &SceneDocument::saved, this, &MainWindow::watchDocumentFile);
-    for (auto signal : {&SceneDocument::bodyInserted, &SceneDocument::bodyRemoved}) {
-        connect(m_document, signal, this, [this] { m_bodiesEdited = true; });
-    }
-    connect(m_document, &SceneDocument::bodyMoved, this, [this] { m_bodiesEdited = true; });
-    connect(m_document, &SceneDocument::bodyChanged, this, [this] { m_bodiesEdited = true; });
-    connect(m_document, &SceneDocument::jointInserted, this, [this] { m_bodiesEdited = true; });
-    connect(m_document, &SceneDocument::jointRemoved, this, [this] { m_bodiesEdited = true; });
-    connect(m_document, &SceneDocument::settingsChanged, this, [this] { m_settingsEdited = true; });
-    // Every edit ends in a history change (push, undo, redo, merge), once per edit even when it
-    // touches many bodies: the moment to bring the simulation up to date.
-    connect(m_document->undoStack(), &QUndoStack::indexChanged, this, &MainWindow::syncSimulation);
+    // Each change of the document reaches the running world as it happens, in place: a run paused
+    // mid-way keeps its state, and a drag moves one body instead of rebuilding the world.
+    connect(m_document, &SceneDocument::bodyInserted, this, [this](int index) {
+        followEdit([&](QString* error) { return m_simulation->insertBody(index, m_document->body(index), error); });
+    });
+    connect(m_document, &SceneDocument::bodyRemoved, this, [this](int index) {
+        followEdit([&](QString*) { m_simulation->removeBody(index); return true; });
+    });
+    connect(m_document, &SceneDocument::bodyMoved, this, [this](int from, int to) {
+        followEdit([&](QString*) { m_simulation->moveBody(from, to); return true; });
+    });
+    connect(m_document, &SceneDocument::bodyChanged, this, [this](int index, BodyField field) {
+        followEdit([&](QString* error) { return m_simulation->changeBody(index, m_document->body(index), field, error); });
+    });
+    connect(m_document, &SceneDocument::jointInserted, this, [this](int index) {
+        followEdit([&](QString* error) { return m_simulation->insertJoint(index, m_document->joint(index), error); });
+    });
+    connect(m_document, &SceneDocument::jointRemoved, this, [this](int index) {
+        followEdit([&](QString*) { m_simulation->removeJoint(index); return true; });
+    });
+    connect(m_document, &SceneDocument::jointChanged, this, [this](int index) {
+        followEdit([&](QString* error) { return m_simulation->changeJoint(index, m_document->joint(index), error); });
+    });
+    connect(m_document, &SceneDocument::settingsChanged, this, [this] {
+        QString error;
+        if (!m_simulation->applySettings(m_document->scene().settings, &error)) {
+            showSimulationError(tr("The settings cannot be used: %1").arg(error));
+        }
+    });
     connect(m_document, &SceneDocument::selectionChanged, this, &MainWindow::syncTreeSelection);
+    connect(m_document, &SceneDocument::selectionChanged, this, &MainWindow::updateJointActions);
+    connect(m_document, &SceneDocument::bodyChanged, this, &MainWindow::updateJointActions);
     connect(m_settingsModel, &SimulationSettingsModel::rejected, this,
             [this](const QString& message) { statusBar()->showMessage(message, 8000); });
     connect(m_inspector, &InspectorPanel::rejected, this,
@@ -143,6 +177,7 @@ MainWindow::MainWindow(QWidget* parent)
 
     connect(m_simulation, &SimulationController::stepped, this, &MainWindow::updateStatus);
     connect(m_simulation, &SimulationController::worldRebuilt, this, &MainWindow::updateStatus);
+    connect(m_simulation, &SimulationController::bodiesEdited, this, &MainWindow::updateStatus);
     connect(m_simulation, &SimulationController::simulationError, this, &MainWindow::showSimulationError);
     connect(m_watcher, &QFileSystemWatcher::fileChanged, this, &MainWindow::documentFileChanged);
 
@@ -153,12 +188,13 @@ MainWindow::MainWindow(QWidget* parent)
     restoreLayout();
     updateTitle();
     updateStatus();
+    updateJointActions();
 }
 
 MainWindow::~MainWindow() {
-    // The document (a child, destroyed after this destructor) clears its undo stack as it goes,
-    // which emits indexChanged: it must not reach syncSimulation on a half-destroyed window.
-    m_document->undoStack()->disconnect(this);
+    // The document is a child, destroyed after this destructor: nothing it emits on the way may
+    // reach a half-destroyed window.
+    m_document->disconnect(this);
     // The QML panel goes first: its bindings read the settings model and the controller, which
     // are children of this window and would otherwise be destroyed under it.
     delete m_settingsPanel;
@@ -215,7 +251,8 @@ void MainWindow::createActions() {
     redo->setObjectName(QStringLiteral("redo"));
     redo->setShortcut(QKeySequence::Redo);
     redo->setIcon(QIcon::fromTheme(QStringLiteral("edit-redo"), s->standardIcon(QStyle::SP_ArrowForward)));
-    a = makeAction(QStringLiteral("delete"), tr("&Delete"), QKeySequence::Delete, tr("Delete the selected bodies"));
+    a = makeAction(QStringLiteral("delete"), tr("&Delete"), QKeySequence::Delete,
+                   tr("Delete the selected bodies (with their joints) and joints"));
     a->setIcon(QIcon::fromTheme(QStringLiteral("edit-delete"), s->standardIcon(QStyle::SP_TrashIcon)));
     connect(a, &QAction::triggered, this, &MainWindow::deleteSelection);
     a = makeAction(QStringLiteral("duplicate"), tr("D&uplicate"), Qt::CTRL | Qt::Key_D, tr("Copy the selected bodies beside them"));
@@ -237,6 +274,12 @@ void MainWindow::createActions() {
         a = makeAction(QLatin1String(kAddNames[type]), tr("Add %1").arg(shapeDisplayName(shape)), {},
                        tr("Add a %1 above the point the camera looks at").arg(shapeDisplayName(shape).toLower()));
         connect(a, &QAction::triggered, this, [this, type] { addBody(type); });
+    }
+
+    // Add Joint: one action per type; updateJointActions enables them and says why not.
+    for (const JointAction& joint : kJointActions) {
+        a = makeAction(QLatin1String(joint.objectName), tr("Add %1 Joint").arg(jointTypeDisplayName(joint.type)), {}, {});
+        connect(a, &QAction::triggered, this, [this, type = joint.type] { addJoint(static_cast<int>(type)); });
     }
 
     // View.
@@ -300,13 +343,13 @@ void MainWindow::createDocks() {
     connect(m_sceneTreeModel, &QAbstractItemModel::modelReset, m_sceneTree, &QTreeView::expandAll);
     connect(m_sceneTree->selectionModel(), &QItemSelectionModel::selectionChanged, this, [this] {
         if (m_syncingSelection) return;
-        QList<int> selected;
+        QList<int> bodies, joints;
         for (const QModelIndex& index : m_sceneTree->selectionModel()->selectedRows()) {
-            const int body = m_sceneTreeModel->bodyIndexOf(index);
-            if (body >= 0) selected << body;
+            if (const int body = m_sceneTreeModel->bodyIndexOf(index); body >= 0) bodies << body;
+            if (const int joint = m_sceneTreeModel->jointIndexOf(index); joint >= 0) joints << joint;
         }
         m_syncingSelection = true;
-        m_document->setSelectedBodies(selected);
+        m_document->setSelection(bodies, joints);
         m_syncingSelection = false;
     });
 
@@ -376,6 +419,11 @@ void MainWindow::createMenusAndToolBars() {
     for (const char* name : {"addBox", "addSphere", "addCapsule", "addCylinder", "addHull"}) {
         add->addAction(action(QLatin1String(name)));
     }
+    add->addSeparator();
+    QMenu* joints = add->addMenu(tr("Add &Joint"));
+    joints->setObjectName(QStringLiteral("addJointMenu"));
+    joints->setToolTipsVisible(true);  // a disabled entry says what selection it needs
+    for (const JointAction& joint : kJointActions) joints->addAction(action(QLatin1String(joint.objectName)));
 
     QMenu* simulation = menuBar()->addMenu(tr("&Simulation"));
     simulation->addAction(m_playAction);
@@ -418,6 +466,12 @@ void MainWindow::createMenusAndToolBars() {
     for (const char* name : {"addBox", "addSphere", "addCapsule", "addCylinder", "addHull"}) {
         addBar->addAction(action(QLatin1String(name)));
     }
+    auto* jointButton = new QToolButton;
+    jointButton->setText(tr("Joint"));
+    jointButton->setToolTip(tr("Add a joint between the selected bodies, or from one body to the world"));
+    jointButton->setMenu(joints);
+    jointButton->setPopupMode(QToolButton::InstantPopup);
+    addBar->addWidget(jointButton);
     addBar->addSeparator();
     addBar->addAction(action(QStringLiteral("duplicate")));
     addBar->addAction(action(QStringLiteral("delete")));
@@ -680,9 +734,52 @@ void MainWindow::addBody(int shapeType) {
         new AddBodies(m_document, tr("Add %1").arg(name), {m_document->bodyCount()}, {std::move(body)}));
 }
 
+void MainWindow::addJoint(int jointType) {
+    const QList<int>& bodies = m_document->selectedBodies();
+    if (bodies.isEmpty() || bodies.size() > 2) return;
+    const auto type = static_cast<simcore::JointType>(jointType);
+    const std::optional<std::size_t> bodyB =
+        bodies.size() == 2 ? std::optional<std::size_t>(static_cast<std::size_t>(bodies[1])) : std::nullopt;
+    simcore::SceneJoint joint = templateJoint(type, m_document->uniqueJointName(tr("Joint")), m_document->scene().bodies,
+                                              static_cast<std::size_t>(bodies[0]), bodyB);
+    // Two bodies at one point leave a distance joint no length, for instance.
+    if (const QString problem = m_document->jointProblem(joint); !problem.isEmpty()) {
+        statusBar()->showMessage(tr("No joint added: %1").arg(problem), 8000);
+        return;
+    }
+    m_document->undoStack()->push(new AddJoint(m_document, tr("Add %1 Joint").arg(jointTypeDisplayName(type)),
+                                               m_document->jointCount(), std::move(joint)));
+}
+
+void MainWindow::updateJointActions() {
+    const QList<int>& bodies = m_document->selectedBodies();
+    const bool anyDynamic = std::any_of(bodies.begin(), bodies.end(), [this](int i) {
+        return m_document->body(i).body.motion == simcore::MotionType::Dynamic;
+    });
+    QString why;  // what the selection lacks, or empty when it fits
+    if (bodies.isEmpty() || bodies.size() > 2) {
+        why = tr("Select two bodies to join them, or one body to hold it to the world.");
+    } else if (!anyDynamic) {
+        why = tr("A joint needs a dynamic body to act on; the selected bodies do not move.");
+    }
+    for (const JointAction& joint : kJointActions) {
+        QAction* a = action(QLatin1String(joint.objectName));
+        const QString type = jointTypeDisplayName(joint.type).toLower();
+        QString tip = why;
+        if (why.isEmpty() && bodies.size() == 2) {
+            tip = tr("Join %1 and %2 with a %3 joint").arg(m_document->bodyName(bodies[0]), m_document->bodyName(bodies[1]), type);
+        } else if (why.isEmpty()) {
+            tip = tr("Hold %1 to the world with a %2 joint").arg(m_document->bodyName(bodies[0]), type);
+        }
+        a->setEnabled(why.isEmpty());
+        a->setStatusTip(tip);
+        a->setToolTip(tip);
+    }
+}
+
 void MainWindow::deleteSelection() {
-    if (m_document->selectedBodies().isEmpty()) return;
-    m_document->undoStack()->push(new RemoveBodies(m_document, m_document->selectedBodies()));
+    if (m_document->selectedBodies().isEmpty() && m_document->selectedJoints().isEmpty()) return;
+    m_document->undoStack()->push(new RemoveBodies(m_document, m_document->selectedBodies(), m_document->selectedJoints()));
 }
 
 void MainWindow::duplicateSelection() {
@@ -745,24 +842,17 @@ void MainWindow::throwBody() {
 
 // ---- Keeping things in step ------------------------------------------------------------------------
 
-void MainWindow::syncSimulation() {
-    if (m_bodiesEdited) {
-        QString error;
-        if (!m_simulation->setScene(m_document->scene(), &error)) {
-            showSimulationError(tr("The edited scene cannot be simulated: %1").arg(error));
-        }
-    } else if (m_settingsEdited) {
-        QString error;
-        if (!m_simulation->applySettings(m_document->scene().settings, &error)) {
-            showSimulationError(tr("The settings cannot be used: %1").arg(error));
-        }
+void MainWindow::followEdit(const std::function<bool(QString* error)>& edit) {
+    QString error;
+    if (edit(&error)) return;
+    // The world could not take the edit in place: start it again from the edited scene.
+    QString rebuildError;
+    if (!m_simulation->setScene(m_document->scene(), &rebuildError)) {
+        showSimulationError(tr("The edited scene cannot be simulated: %1").arg(rebuildError));
     }
-    m_bodiesEdited = m_settingsEdited = false;
 }
 
-void MainWindow::documentSceneReplaced() {
-    m_bodiesEdited = m_settingsEdited = false;
-    // A clean scene (new, opened, reverted) makes any earlier autosave stale.
+void MainWindow::documentSceneReplaced() {    // A clean scene (new, opened, reverted) makes any earlier autosave stale.
     if (!m_document->isModified()) removeRecoveryFile();
     QString error;
     if (!m_simulation->setScene(m_document->scene(), &error)) {
@@ -780,9 +870,15 @@ void MainWindow::syncTreeSelection() {
         selection.select(m_sceneTreeModel->indexOfBody(body, 0),
                          m_sceneTreeModel->indexOfBody(body, SceneTreeModel::ColumnCount - 1));
     }
+    for (int joint : m_document->selectedJoints()) {
+        selection.select(m_sceneTreeModel->indexOfJoint(joint, 0),
+                         m_sceneTreeModel->indexOfJoint(joint, SceneTreeModel::ColumnCount - 1));
+    }
     m_sceneTree->selectionModel()->select(selection, QItemSelectionModel::ClearAndSelect);
     if (!m_document->selectedBodies().isEmpty()) {
         m_sceneTree->scrollTo(m_sceneTreeModel->indexOfBody(m_document->selectedBodies().first()));
+    } else if (!m_document->selectedJoints().isEmpty()) {
+        m_sceneTree->scrollTo(m_sceneTreeModel->indexOfJoint(m_document->selectedJoints().first()));
     }
     m_syncingSelection = false;
 }

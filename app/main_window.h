@@ -117,10 +117,14 @@ private:
                         const QString& statusTip);
     QDockWidget* addDock(const QString& objectName, const QString& title, QWidget* widget, Qt::DockWidgetArea area);
 
-    void syncSimulation();  // after every history change: rebuild or retune the running world
+    // Brings the running world up to date with an edit of the document, in place (`edit` returns
+    // false with the engine's reason when it cannot), or else by rebuilding it from the document.
+    void followEdit(const std::function<bool(QString* error)>& edit);
     void documentSceneReplaced();
     void syncTreeSelection();
     void addBody(int shapeType);
+    void addJoint(int jointType);
+    void updateJointActions();  // Add Joint fits a selection of one or two bodies
     void deleteSelection();
     void duplicateSelection();
     void applySimulatedPose();
@@ -161,8 +165,6 @@ private:
     QTimer* m_autosaveTimer = nullptr;
     QFileSystemWatcher* m_watcher = nullptr;
     QString m_expectedFileStamp;  // size and time of the file as we last read or wrote it
-    bool m_bodiesEdited = false;    // since the last sync with the simulation
-    bool m_settingsEdited = false;
     bool m_syncingSelection = false;
 };
 

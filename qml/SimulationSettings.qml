@@ -131,6 +131,14 @@ Pane {
                         currentIndex: settingsModel.positionCorrection
                         onActivated: (index) => settingsModel.positionCorrection = index
                     }
+                    Label { text: qsTr("Integrator") }
+                    ComboBox {
+                        objectName: "integratorComboBox"
+                        Layout.fillWidth: true
+                        model: settingsModel.integratorNames
+                        currentIndex: settingsModel.integrator
+                        onActivated: (index) => settingsModel.integrator = index
+                    }
                 }
             }
 

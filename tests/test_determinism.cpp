@@ -1,35 +1,17 @@
 // Determinism: the same scene and settings give bit-identical states, run after run, across
 // save -> load, and between the library and the headless runner (same binary, same machine).
 
+#include "support/runner_states.h"
+#include "support/state_hash.h"
+
 #include "simcore/io/scene_io.h"
 
 #include <QtTest>
 
-#include <nlohmann/json.hpp>
-
-#include <cstring>
-
 using namespace simcore;
+using test_support::stateHash;
 
 namespace {
-
-// FNV-1a over the bytes of every body's pose and velocities: any bit that differs changes it.
-std::uint64_t stateHash(const World& world) {
-    std::uint64_t hash = 1469598103934665603ull;
-    auto mix = [&hash](const void* data, std::size_t size) {
-        const auto* bytes = static_cast<const unsigned char*>(data);
-        for (std::size_t i = 0; i < size; ++i) hash = (hash ^ bytes[i]) * 1099511628211ull;
-    };
-    const BodyStorage& b = world.bodies();
-    for (std::size_t i = 0; i < b.size(); ++i) {
-        mix(&b.centerOfMass[i], sizeof(Vec3));
-        mix(&b.orientation[i], sizeof(Quat));
-        mix(&b.linearVelocity[i], sizeof(Vec3));
-        mix(&b.angularVelocity[i], sizeof(Vec3));
-        mix(&b.awake[i], sizeof(std::uint8_t));
-    }
-    return hash;
-}
 
 Scene loadScene(const QString& relativePath) {
     const std::string path = std::string(INTERPLAY_SOURCE_DIR) + "/" + relativePath.toStdString();
@@ -88,22 +70,11 @@ void TestDeterminism::runnerMatchesTheLibrary() {
     BuiltWorld built = buildWorld(loadScene(scene));
     for (int i = 0; i < steps; ++i) built.world.step();
 
-    QProcess runner;
-    runner.start(INTERPLAY_RUN_PATH, {QString(INTERPLAY_SOURCE_DIR) + "/" + scene, "--steps", QString::number(steps)});
-    QVERIFY(runner.waitForFinished(60'000));
-    QCOMPARE(runner.exitCode(), 0);
-    const auto report = nlohmann::json::parse(runner.readAllStandardOutput().toStdString());
-    const BodyStorage& b = built.world.bodies();
-    QCOMPARE(report["bodies"].size(), b.size());
-    for (std::size_t i = 0; i < b.size(); ++i) {
-        // The report prints each float as the double it converts to exactly.
-        const Vec3 p = b.origin(i);
-        const auto& position = report["bodies"][i]["position"];
-        QCOMPARE(position[0].get<float>(), p.x);
-        QCOMPARE(position[1].get<float>(), p.y);
-        QCOMPARE(position[2].get<float>(), p.z);
-        QCOMPARE(report["bodies"][i]["orientation"][0].get<float>(), b.orientation[i].w);
-    }
+    QString error;
+    const auto runner = test_support::runnerBodyStates(QString(INTERPLAY_SOURCE_DIR) + "/" + scene, steps, &error);
+    QVERIFY2(runner, qPrintable(error));
+    QCOMPARE(runner->size(), built.world.bodyCount());
+    QCOMPARE(stateHash(*runner), stateHash(built.world));
 }
 
 QTEST_GUILESS_MAIN(TestDeterminism)

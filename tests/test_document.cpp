@@ -1,7 +1,8 @@
 // The editor's document layer without a window: every undo command (add, remove, reorder, change
-// bodies, change settings) with undo/redo, merging of continuous edits, the clean state and what
-// "modified" means, open/save/revert round trips, thesis import, load errors, and the panels'
-// editing models (inspector rows, simulation settings) pushing commands and refusing bad input.
+// bodies, add/change/delete joints, change settings) with undo/redo, merging of continuous edits,
+// the clean state and what "modified" means, open/save/revert round trips, thesis import, load
+// errors, and the panels' editing models (inspector rows for bodies and joints, simulation
+// settings) pushing commands and refusing bad input.
 
 #include "app/document/body_templates.h"
 #include "app/document/scene_document.h"
@@ -13,6 +14,7 @@
 #include "simcore/io/scene_io.h"
 
 #include <QApplication>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QFile>
 #include <QLineEdit>
@@ -22,8 +24,11 @@
 #include <QUndoStack>
 
 using interplay::AddBodies;
+using interplay::AddJoint;
 using interplay::BodyField;
 using interplay::ChangeBodies;
+using interplay::ChangeJoints;
+using interplay::JointField;
 using interplay::ChangeSettings;
 using interplay::RemoveBodies;
 using interplay::ReorderBody;
@@ -47,6 +52,16 @@ void pushMove(SceneDocument& document, int index, const simcore::Vec3& offset, b
     body.body.position += offset;
     document.undoStack()->push(new ChangeBodies(&document, QStringLiteral("Move %1").arg(document.bodyName(index)),
                                                 BodyField::Position, {index}, {body}, mergeable));
+}
+
+// A joint made as Add Joint makes it, between bodies `a` and `b` (or `a` and the world).
+simcore::SceneJoint jointOf(const SceneDocument& document, simcore::JointType type, int a, std::optional<int> b = {}) {
+    return interplay::templateJoint(type, document.uniqueJointName("Joint"), document.scene().bodies, std::size_t(a),
+                                    b ? std::optional<std::size_t>(std::size_t(*b)) : std::nullopt);
+}
+
+void pushJoint(SceneDocument& document, simcore::JointType type, int a, std::optional<int> b = {}) {
+    document.undoStack()->push(new AddJoint(&document, "Add Joint", document.jointCount(), jointOf(document, type, a, b)));
 }
 
 void typeInto(QLineEdit* field, const QString& text) {
@@ -75,6 +90,13 @@ private slots:
     void selectionNeverDirties();
     void uniqueBodyNames();
 
+    void templateJointsAreAccepted_data();
+    void templateJointsAreAccepted();
+    void addJointUndoRedo();
+    void deleteJointsBodiesOrBothInOneStep();
+    void changeJointsUndoRedoMergeAndClean();
+    void jointSelectionFollowsTheJoints();
+
     void saveLoadRoundTripIsExact();
     void failedSaveLeavesTheOldFile();
     void revertDropsChangesAndHistory();
@@ -87,6 +109,9 @@ private slots:
     void inspectorRejectsBadInput();
     void inspectorShapeAndMotionChoices();
     void settingsModelPushesAndRejects();
+    void inspectorEditsJoints();
+    void inspectorRejectsBadJointInput_data();
+    void inspectorRejectsBadJointInput();
 
 private:
     SceneDocument m_document;
@@ -299,6 +324,175 @@ void TestDocument::uniqueBodyNames() {
     m_document.insertBody(0, interplay::templateBody(simcore::ShapeType::Box, "Box 1", {}));
     m_document.insertBody(0, interplay::templateBody(simcore::ShapeType::Box, "Box 3", {}));
     QCOMPARE(m_document.uniqueBodyName("Box"), QString("Box 2"));
+}
+
+void TestDocument::templateJointsAreAccepted_data() {
+    QTest::addColumn<int>("type");
+    QTest::addColumn<bool>("toWorld");
+    for (simcore::JointType type : {simcore::JointType::Ball, simcore::JointType::Hinge, simcore::JointType::Slider,
+                                    simcore::JointType::Fixed, simcore::JointType::Distance}) {
+        const QByteArray name = interplay::jointTypeDisplayName(type).toLatin1();
+        QTest::newRow(name + " between two bodies") << int(type) << false;
+        QTest::newRow(name + " to the world") << int(type) << true;
+    }
+}
+
+void TestDocument::templateJointsAreAccepted() {
+    QFETCH(int, type);
+    QFETCH(bool, toWorld);
+    const simcore::SceneJoint joint =
+        jointOf(m_document, simcore::JointType(type), 1, toWorld ? std::nullopt : std::optional<int>(2));
+    QCOMPARE(m_document.jointProblem(joint), QString());
+    const simcore::Vec3 a = m_document.body(1).body.position, b = m_document.body(2).body.position;
+    if (toWorld) {
+        QVERIFY(!joint.bodyB);
+        QCOMPARE(joint.joint.anchor, a);  // at the body
+    } else if (joint.joint.type == simcore::JointType::Distance) {
+        QCOMPARE(joint.joint.anchor, a);  // a rod between the origins
+        QCOMPARE(joint.joint.anchorB, b);
+    } else {
+        QVERIFY(glm::length(joint.joint.anchor - 0.5f * (a + b)) < 1e-5f);  // midway
+    }
+    if (joint.joint.type == simcore::JointType::Hinge && !toWorld) {
+        QVERIFY(std::abs(glm::dot(joint.joint.axis, b - a)) < 1e-4f);  // square to the line: they swing
+    }
+    // And what the engine refuses is said: a rod of no length.
+    simcore::SceneJoint rod = jointOf(m_document, simcore::JointType::Distance, 1, 2);
+    rod.joint.anchorB = rod.joint.anchor;
+    QVERIFY(m_document.jointProblem(rod).contains("anchorB"));
+}
+
+void TestDocument::addJointUndoRedo() {
+    QSignalSpy inserted(&m_document, &SceneDocument::jointInserted);
+    m_document.setSelectedBodies({1, 2});
+    m_document.undoStack()->push(new AddJoint(&m_document, "Add Hinge Joint", 0, jointOf(m_document, simcore::JointType::Hinge, 1, 2)));
+    QCOMPARE(m_document.jointCount(), 1);
+    QCOMPARE(inserted.count(), 1);
+    QCOMPARE(m_document.jointName(0), QString("Joint 1"));
+    QCOMPARE(m_document.uniqueJointName("Joint"), QString("Joint 2"));
+    QCOMPARE(m_document.undoStack()->undoText(), QString("Add Hinge Joint"));
+    // The new joint is the selection, on its own.
+    QCOMPARE(m_document.selectedJoints(), QList<int>{0});
+    QVERIFY(m_document.selectedBodies().isEmpty());
+    QVERIFY(m_document.isModified());
+
+    m_document.undoStack()->undo();
+    QCOMPARE(m_document.jointCount(), 0);
+    QVERIFY(m_document.selectedJoints().isEmpty());
+    QVERIFY(!m_document.isModified());
+    m_document.undoStack()->redo();
+    QCOMPARE(m_document.joint(0).joint.type, simcore::JointType::Hinge);
+    QCOMPARE(m_document.joint(0).bodyA, std::size_t(1));
+    QCOMPARE(m_document.joint(0).bodyB, std::optional<std::size_t>(2));
+}
+
+void TestDocument::deleteJointsBodiesOrBothInOneStep() {
+    pushJoint(m_document, simcore::JointType::Hinge, 1, 2);  // Joint 1
+    pushJoint(m_document, simcore::JointType::Ball, 3);      // Joint 2, capsule to the world
+    pushJoint(m_document, simcore::JointType::Fixed, 4, 5);  // Joint 3
+    const std::string before = text(m_document.scene());
+    const int entries = m_document.undoStack()->count();
+    QUndoStack* stack = m_document.undoStack();
+
+    // A joint alone.
+    stack->push(new RemoveBodies(&m_document, {}, {1}));
+    QCOMPARE(stack->undoText(), QString("Delete Joint 2"));
+    QCOMPARE(m_document.jointCount(), 2);
+    QCOMPARE(m_document.bodyCount(), 6);
+    stack->undo();
+    QCOMPARE(text(m_document.scene()), before);
+    QCOMPARE(m_document.selectedJoints(), QList<int>{1});  // undo selects what came back
+
+    // A body takes its joint with it; the joints after it are renumbered, and undo puts all back.
+    const QString capsule = m_document.bodyName(3);
+    stack->push(new RemoveBodies(&m_document, {2}));
+    QCOMPARE(m_document.jointCount(), 2);
+    QCOMPARE(m_document.bodyName(int(m_document.joint(0).bodyA)), capsule);  // body 3 is now 2
+    QCOMPARE(m_document.joint(1).bodyA, std::size_t(3));
+    QCOMPARE(m_document.joint(1).bodyB, std::optional<std::size_t>(4));
+    stack->undo();
+    QCOMPARE(text(m_document.scene()), before);
+
+    // Both, and a joint that is also attached to a deleted body: one entry, each removed once.
+    const QString cylinder = m_document.bodyName(4);
+    stack->push(new RemoveBodies(&m_document, {4}, {2, 0}));
+    QCOMPARE(stack->undoText(), QString("Delete %1 and 2 Joints").arg(cylinder));
+    QCOMPARE(m_document.jointCount(), 1);
+    QCOMPARE(m_document.jointName(0), QString("Joint 2"));
+    QCOMPARE(stack->count(), entries + 1);
+    stack->undo();
+    QCOMPARE(text(m_document.scene()), before);
+    QCOMPARE(m_document.selectedBodies(), QList<int>{4});
+    QCOMPARE(m_document.selectedJoints(), (QList<int>{0, 2}));
+    stack->redo();
+    QCOMPARE(m_document.jointCount(), 1);
+}
+
+void TestDocument::changeJointsUndoRedoMergeAndClean() {
+    pushJoint(m_document, simcore::JointType::Hinge, 1, 2);
+    QVERIFY(m_document.save(m_dir.filePath("joints.json")));
+    const simcore::SceneJoint original = m_document.joint(0);
+    QSignalSpy changed(&m_document, &SceneDocument::jointChanged);
+    QUndoStack* stack = m_document.undoStack();
+    const int saved = stack->count();
+
+    simcore::SceneJoint motor = original;
+    motor.joint.motor = simcore::JointMotor{1.0f, 50.0f};
+    stack->push(new ChangeJoints(&m_document, "Change Motor of Joint 1", JointField::Motor, {0}, {motor}));
+    for (int i = 2; i <= 10; ++i) {  // a continuous edit of the speed: one entry
+        motor.joint.motor->speed = float(i);
+        stack->push(new ChangeJoints(&m_document, "Change Motor of Joint 1", JointField::Motor, {0}, {motor}, true));
+    }
+    QCOMPARE(stack->count(), saved + 1);
+    QCOMPARE(changed.count(), 10);
+    QCOMPARE(changed.last().at(1).value<JointField>(), JointField::Motor);
+    QCOMPARE(m_document.joint(0).joint.motor->speed, 10.0f);
+    QVERIFY(m_document.isModified());
+
+    // Another field is another entry; the same values again are no entry at all.
+    simcore::SceneJoint limited = m_document.joint(0);
+    limited.joint.limits = simcore::JointLimits{-0.5f, 0.5f};
+    stack->push(new ChangeJoints(&m_document, "Change Limits of Joint 1", JointField::Limits, {0}, {limited}, true));
+    QCOMPARE(stack->count(), saved + 2);
+    stack->push(new ChangeJoints(&m_document, "Nothing", JointField::Limits, {0}, {m_document.joint(0)}));
+    QCOMPARE(stack->count(), saved + 2);
+
+    stack->undo();
+    QVERIFY(!m_document.joint(0).joint.limits);
+    stack->undo();
+    QVERIFY(interplay::sameSceneJoint(m_document.joint(0), original));
+    QVERIFY(!m_document.isModified());  // back at the saved state
+    stack->redo();
+    QCOMPARE(m_document.joint(0).joint.motor->speed, 10.0f);
+
+    // Edited back to where it started: the entry is dropped.
+    simcore::SceneJoint moved = m_document.joint(0);
+    moved.joint.anchor.y += 1.0f;
+    stack->push(new ChangeJoints(&m_document, "Change Anchor of Joint 1", JointField::Anchor, {0}, {moved}));
+    stack->push(new ChangeJoints(&m_document, "Change Anchor of Joint 1", JointField::Anchor, {0},
+                                 {m_document.joint(0)}, true));
+    moved.joint.anchor.y -= 1.0f;
+    stack->push(new ChangeJoints(&m_document, "Change Anchor of Joint 1", JointField::Anchor, {0}, {moved}, true));
+    QCOMPARE(stack->count(), saved + 1);
+}
+
+void TestDocument::jointSelectionFollowsTheJoints() {
+    pushJoint(m_document, simcore::JointType::Ball, 1);
+    pushJoint(m_document, simcore::JointType::Ball, 2);
+    pushJoint(m_document, simcore::JointType::Ball, 3);
+    QSignalSpy selection(&m_document, &SceneDocument::selectionChanged);
+    m_document.setSelection({1}, {2, 0, 2, 7});
+    QCOMPARE(m_document.selectedJoints(), (QList<int>{0, 2}));  // sorted, deduplicated, in range
+    QCOMPARE(selection.count(), 1);
+    m_document.insertJoint(1, jointOf(m_document, simcore::JointType::Ball, 4));
+    QCOMPARE(m_document.selectedJoints(), (QList<int>{0, 3}));  // the selected joints, not the rows
+    m_document.takeJoint(0);
+    QCOMPARE(m_document.selectedJoints(), QList<int>{2});
+    QCOMPARE(m_document.jointName(2), QString("Joint 3"));
+    // Picking a body starts a new selection.
+    m_document.setSelectedBodies({2});
+    QVERIFY(m_document.selectedJoints().isEmpty());
+    QCOMPARE(m_document.undoStack()->count(), 3);  // selecting is not editing
 }
 
 void TestDocument::saveLoadRoundTripIsExact() {
@@ -515,6 +709,14 @@ void TestDocument::settingsModelPushesAndRejects() {
     QCOMPARE(model.preset(), 2);
     QCOMPARE(m_document.scene().settings.substeps, 8);
 
+    model.setIntegrator(static_cast<int>(simcore::Integrator::VelocityVerlet));
+    QCOMPARE(m_document.scene().settings.integrator, simcore::Integrator::VelocityVerlet);
+    QCOMPARE(m_document.undoStack()->undoText(), QString("Change Integrator"));
+    QCOMPARE(model.integratorNames().size(), 3);
+    model.setIntegrator(3);  // no such integrator: nothing pushed
+    QCOMPARE(m_document.undoStack()->undoText(), QString("Change Integrator"));
+    QCOMPARE(m_document.scene().settings.integrator, simcore::Integrator::VelocityVerlet);
+
     model.setEffect(static_cast<int>(simcore::Effect::Friction), false);
     QVERIFY(!m_document.scene().settings.effects[simcore::Effect::Friction]);
     QCOMPARE(model.effects().at(static_cast<int>(simcore::Effect::Friction)).toBool(), false);
@@ -535,6 +737,107 @@ void TestDocument::settingsModelPushesAndRejects() {
     model.setInteracting(false);
     QCOMPARE(m_document.undoStack()->count(), entries + 1);
     QCOMPARE(model.gravityY(), -10.0);
+}
+
+void TestDocument::inspectorEditsJoints() {
+    interplay::InspectorPanel inspector(&m_document);
+    pushJoint(m_document, simcore::JointType::Hinge, 1, 2);  // selects it
+    QUndoStack* stack = m_document.undoStack();
+    const int entries = stack->count();
+    // The joint's form, not the body form.
+    QVERIFY(inspector.numberField("axis.x")->isVisibleTo(&inspector));
+    QVERIFY(!inspector.numberField("friction")->isVisibleTo(&inspector));
+    QVERIFY(!inspector.numberField("anchorB.x")->isVisibleTo(&inspector));  // distance joints only
+    QVERIFY(!inspector.numberField("hingeMotorSpeed")->isVisibleTo(&inspector));  // the motor is off
+    QCOMPARE(inspector.numberField("anchor.y")->text(), QString::number(m_document.joint(0).joint.anchor.y));
+
+    typeInto(inspector.numberField("anchor.y"), "2.5");
+    QCOMPARE(m_document.joint(0).joint.anchor.y, 2.5f);
+    QCOMPARE(stack->undoText(), QString("Change Anchor of Joint 1"));
+
+    inspector.motorBox()->click();
+    QVERIFY(m_document.joint(0).joint.motor.has_value());
+    QCOMPARE(stack->undoText(), QString("Change Motor of Joint 1"));
+    QVERIFY(inspector.numberField("hingeMotorSpeed")->isVisibleTo(&inspector));
+    QVERIFY(!inspector.numberField("sliderMotorSpeed")->isVisibleTo(&inspector));
+    typeInto(inspector.numberField("hingeMotorSpeed"), "-3");
+    QCOMPARE(m_document.joint(0).joint.motor->speed, -3.0f);
+    QCOMPARE(stack->undoText(), QString("Change Hinge Motor Speed of Joint 1"));
+
+    // Hinge limits read and write degrees; the scene keeps radians.
+    inspector.limitsBox()->click();
+    QCOMPARE(inspector.numberField("hingeUpper")->text(), QString("45"));
+    typeInto(inspector.numberField("hingeUpper"), "90");
+    QVERIFY(std::abs(m_document.joint(0).joint.limits->upper - simcore::kPi / 2) < 1e-6f);
+
+    typeInto(inspector.jointNameField(), "Elbow");
+    QCOMPARE(m_document.jointName(0), QString("Elbow"));
+    QCOMPARE(stack->undoText(), QString("Rename Joint 1 to Elbow"));
+
+    QCOMPARE(stack->count(), entries + 6);
+    while (stack->index() > entries) stack->undo();
+    QVERIFY(!m_document.joint(0).joint.motor);
+    QVERIFY(!inspector.motorBox()->isChecked());  // the panel follows undo
+    QCOMPARE(inspector.jointNameField()->text(), QString("Joint 1"));
+
+    // A distance joint shows its own rows, and its spring can be switched on.
+    pushJoint(m_document, simcore::JointType::Distance, 3, 4);
+    QVERIFY(inspector.numberField("anchorB.x")->isVisibleTo(&inspector));
+    QVERIFY(!inspector.numberField("axis.x")->isVisibleTo(&inspector));
+    inspector.springBox()->click();
+    typeInto(inspector.numberField("springHertz"), "4");
+    QCOMPARE(m_document.joint(1).joint.spring->hertz, 4.0f);
+    inspector.lengthsBox()->click();
+    typeInto(inspector.numberField("maxLength"), "3");
+    QCOMPARE(m_document.joint(1).joint.maxLength, std::optional<float>(3.0f));
+}
+
+void TestDocument::inspectorRejectsBadJointInput_data() {
+    QTest::addColumn<int>("type");
+    QTest::addColumn<QString>("option");  // a check box to switch on first, or empty
+    QTest::addColumn<QString>("field");
+    QTest::addColumn<QString>("input");
+    QTest::addColumn<QString>("reason");
+    const int hinge = int(simcore::JointType::Hinge), slider = int(simcore::JointType::Slider),
+              distance = int(simcore::JointType::Distance);
+    QTest::newRow("NaN anchor") << hinge << "" << "anchor.x" << "nan" << "not a number";
+    QTest::newRow("infinite anchor") << hinge << "" << "anchor.z" << "-inf" << "not a number";
+    QTest::newRow("zero axis") << hinge << "" << "axis.z" << "0" << "axis must be";  // x and y are 0 already
+    QTest::newRow("hinge limit beyond 180°") << hinge << "limits" << "hingeUpper" << "200" << "between";
+    QTest::newRow("lower above upper") << hinge << "limits" << "hingeLower" << "50" << "lower must not exceed";
+    QTest::newRow("negative torque") << hinge << "motor" << "hingeMaxTorque" << "-1" << "between";
+    QTest::newRow("text speed") << slider << "motor" << "sliderMotorSpeed" << "quick" << "not a number";
+    QTest::newRow("slider lower above upper") << slider << "limits" << "sliderLower" << "2" << "lower must not exceed";
+    QTest::newRow("zero spring frequency") << distance << "spring" << "springHertz" << "0" << "between";
+    QTest::newRow("minimum above maximum") << distance << "lengths" << "minLength" << "100" << "minLength must not exceed";
+}
+
+void TestDocument::inspectorRejectsBadJointInput() {
+    QFETCH(int, type);
+    QFETCH(QString, option);
+    QFETCH(QString, field);
+    QFETCH(QString, input);
+    QFETCH(QString, reason);
+    interplay::InspectorPanel inspector(&m_document);
+    // Bodies on one line along x: the hinge axis is z, the slider axis x.
+    m_document.undoStack()->push(new AddJoint(&m_document, "Add", 0, jointOf(m_document, simcore::JointType(type), 1, 2)));
+    if (!option.isEmpty()) inspector.findChild<QCheckBox*>(option)->click();
+    const std::string before = text(m_document.scene());
+    const int entries = m_document.undoStack()->count();
+    QSignalSpy rejected(&inspector, &interplay::InspectorPanel::rejected);
+    interplay::NumberField* number = inspector.numberField(field);
+    QVERIFY(number);
+    QVERIFY(number->isVisibleTo(&inspector));
+    const QString shown = number->text();
+    typeInto(number, input);
+    QCOMPARE(rejected.count(), 1);
+    QVERIFY2(inspector.message().contains(reason), qPrintable(inspector.message()));
+    QCOMPARE(number->text(), shown);
+    QCOMPARE(text(m_document.scene()), before);
+    QCOMPARE(m_document.undoStack()->count(), entries);
+    // A valid edit afterwards clears the message.
+    typeInto(inspector.numberField("anchor.y"), "3");
+    QVERIFY(inspector.message().isEmpty());
 }
 
 int main(int argc, char* argv[]) {

@@ -1,13 +1,19 @@
 // The whole editor window, with real OpenGL under Xvfb: title and modified marker, the
 // unsaved-changes prompt (answered by a test hook, never a modal dialog), open/save/revert through
 // the window, recent files, autosave and recovery, a file changed by another program, a failing
-// save; clicking a body's pixel selects it and dragging moves it as one undo entry; Play, Step
-// and Reset leave the authored scene as it was; the toolbar's edit actions; the QML settings panel
-// loads and its controls change the running world; every demo scene renders.
+// save; clicking a body's pixel selects it and dragging moves it as one undo entry (in place, even
+// among a thousand bodies); Play, Step and Reset leave the authored scene as it was; edits while a
+// run is paused reach the running world without disturbing the other bodies; joints are added
+// from the selection, selected in the tree, drawn highlighted and deleted with their bodies; the
+// toolbar's edit actions; the QML settings panel loads and its controls change the running world;
+// every demo scene renders.
 
 #include "app/document/scene_document.h"
 #include "app/document/scene_tree_model.h"
+#include "app/document/undo_commands.h"
 #include "app/main_window.h"
+#include "app/panels/inspector_panel.h"
+#include "app/panels/number_field.h"
 #include "app/panels/profiler_panel.h"
 #include "app/panels/simulation_settings_panel.h"
 #include "app/simulation/simulation_controller.h"
@@ -24,6 +30,7 @@
 #include <QFile>
 #include <QImage>
 #include <QItemSelectionModel>
+#include <QLineEdit>
 #include <QMenu>
 #include <QMimeData>
 #include <QQuickItem>
@@ -37,6 +44,7 @@
 #include <QTreeView>
 #include <QUndoStack>
 
+#include <map>
 #include <memory>
 #include <set>
 
@@ -95,6 +103,26 @@ QQuickItem* findItem(QQuickItem* root, const QString& name) {
     return nullptr;
 }
 
+// Where every body of the running world is and how it moves, by world id.
+struct LiveState {
+    simcore::Vec3 position, linearVelocity;
+    simcore::Quat orientation;
+    bool operator==(const LiveState&) const = default;
+};
+std::map<std::string, LiveState> liveStates(const simcore::World& world) {
+    std::map<std::string, LiveState> states;
+    for (simcore::BodyId id : world.bodyIds()) {
+        states[world.name(id)] = {world.position(id), world.linearVelocity(id), world.orientation(id)};
+    }
+    return states;
+}
+
+void typeInto(QLineEdit* field, const QString& text) {
+    field->selectAll();
+    QTest::keyClicks(field, text);
+    QTest::keyClick(field, Qt::Key_Return);
+}
+
 simcore::Vec3 bodyCenter(const interplay::SceneDocument& document, int index) {
     const simcore::BodyCreationSettings& b = document.body(index).body;
     return simcore::worldBounds(b.shape, {b.position, b.orientation}).center();
@@ -132,6 +160,13 @@ private slots:
     void addDuplicateDeleteActions();
     void treeSelectionFollowsTheDocument();
     void throwSpawnsIntoTheRunningWorldOnly();
+    void editsWhilePausedKeepTheRun();
+    void jointAddedWhilePausedHoldsTheBodiesWhereTheyAre();
+    void draggingInABigSceneMovesOneBodyInPlace();
+
+    void addJointActionsFollowTheSelection();
+    void deletingABodyTakesItsJointsInOneStep();
+    void jointsAreSelectedInTheTreeAndDrawnHighlighted();
 
     void overlaysAndSleepingTintAreDrawn();
     void qmlPanelLoadsAndChangesTheWorld();
@@ -598,6 +633,253 @@ void TestMainWindow::throwSpawnsIntoTheRunningWorldOnly() {
     QCOMPARE(sceneText(m_window->document()->scene()), authored);
     m_window->action("reset")->trigger();
     QCOMPARE(simulation->bodyIds().size(), before);
+}
+
+void TestMainWindow::editsWhilePausedKeepTheRun() {
+    interplay::SimulationController* simulation = m_window->simulation();
+    interplay::SceneDocument* document = m_window->document();
+    interplay::InspectorPanel* inspector = m_window->inspector();
+    simulation->stepFrames(40);  // mid-fall: every dynamic body is moving
+    const simcore::World* world = simulation->world();
+    QSignalSpy rebuilt(simulation, &interplay::SimulationController::worldRebuilt);
+    const auto run = liveStates(*world);
+    const std::string sphereName = document->body(2).body.name;
+    // Every body of the run but the sphere and `edited` is where the run left it.
+    const auto othersUnchanged = [&](const std::map<std::string, LiveState>& now, const std::string& edited = {}) {
+        for (const auto& [name, state] : run) {
+            if (name != sphereName && name != edited && now.count(name) && !(now.at(name) == state)) return false;
+        }
+        return true;
+    };
+
+    // Friction: the sphere is re-created as it was in the run, with the new friction.
+    document->setSelectedBodies({2});
+    typeInto(inspector->numberField("friction"), "0.05");
+    QCOMPARE(document->body(2).body.friction, 0.05f);
+    QCOMPARE(simulation->world(), world);
+    QCOMPARE(world->stepCount(), std::uint64_t(40));
+    const simcore::BodyId sphere = simulation->bodyIds()[2];
+    QCOMPARE(world->bodies().friction[std::size_t(world->bodies().denseIndex(sphere))], 0.05f);
+    QVERIFY(liveStates(*world) == run);  // nobody moved, the sphere included
+
+    // Colour: drawn differently, nothing else.
+    simcore::SceneBody red = document->body(2);
+    red.color = simcore::Vec3(1, 0, 0);
+    document->undoStack()->push(new interplay::ChangeBodies(document, "Colour", interplay::BodyField::Color, {2}, {red}));
+    QCOMPARE(simulation->authoredColors()[2], std::optional<simcore::Vec3>(simcore::Vec3(1, 0, 0)));
+    QVERIFY(liveStates(*world) == run);
+
+    // A move moves the sphere from where the run left it, by as much as the authored one moved.
+    const simcore::Vec3 liveBefore = world->position(simulation->bodyIds()[2]);
+    typeInto(inspector->numberField("position.x"), QString::number(document->body(2).body.position.x + 1.5f));
+    const simcore::Vec3 liveAfter = world->position(simulation->bodyIds()[2]);
+    QVERIFY2(glm::length(liveAfter - (liveBefore + simcore::Vec3(1.5f, 0, 0))) < 1e-4f, "moved by the edit");
+    QVERIFY(othersUnchanged(liveStates(*world)));
+
+    // Adding and deleting bodies: only they come and go.
+    m_window->action("addBox")->trigger();
+    QCOMPARE(world->bodyCount(), run.size() + 1);
+    QVERIFY(world->contains(simulation->bodyIds().back()));
+    QCOMPARE(world->position(simulation->bodyIds().back()), document->body(document->bodyCount() - 1).body.position);
+    QVERIFY(othersUnchanged(liveStates(*world)));
+    const std::string capsule = document->body(3).body.name;
+    document->setSelectedBodies({3});
+    m_window->action("delete")->trigger();
+    QCOMPARE(world->bodyCount(), run.size());
+    auto afterDelete = liveStates(*world);
+    QVERIFY(!afterDelete.count(capsule));
+    QVERIFY(othersUnchanged(afterDelete));
+    // Undo brings the capsule back as authored; the rest of the run goes on from where it was.
+    document->undoStack()->undo();
+    QCOMPARE(world->position(simulation->bodyIds()[3]), document->body(3).body.position);
+    QVERIFY(othersUnchanged(liveStates(*world), capsule));
+    QCOMPARE(rebuilt.count(), 0);
+    QCOMPARE(world->stepCount(), std::uint64_t(40));
+    // The scene Reset returns to is the document's.
+    QCOMPARE(sceneText(simulation->authoredScene()), sceneText(document->scene()));
+    m_window->action("reset")->trigger();
+    QCOMPARE(simulation->world()->position(simulation->bodyIds()[2]), document->body(2).body.position);
+}
+
+void TestMainWindow::jointAddedWhilePausedHoldsTheBodiesWhereTheyAre() {
+    interplay::SimulationController* simulation = m_window->simulation();
+    interplay::SceneDocument* document = m_window->document();
+    simulation->stepFrames(60);  // landed, turned, away from their authored poses
+    const simcore::World* world = simulation->world();
+    const auto run = liveStates(*world);
+    document->setSelectedBodies({2, 3});  // sphere and capsule
+    m_window->action("addBallJoint")->trigger();
+    QCOMPARE(document->jointCount(), 1);
+    QCOMPARE(world->jointCount(), std::size_t(1));
+    QCOMPARE(world->stepCount(), std::uint64_t(60));
+    QVERIFY(liveStates(*world) == run);
+    // The anchor sits on the sphere where it was authored relative to it, carried to its live pose.
+    const simcore::SceneJoint& joint = document->joint(0);
+    const simcore::BodyCreationSettings& sphere = document->body(2).body;
+    const simcore::Vec3 authoredLocal = glm::inverse(sphere.orientation) * (joint.joint.anchor - sphere.position);
+    const simcore::JointStorage& joints = world->joints();
+    const simcore::Joint& live = joints.joints[std::size_t(joints.denseIndex(simulation->jointIds()[0]))];
+    const simcore::JointGeometry geometry =
+        simcore::jointGeometry(live, joints.poseOf(live.bodyA, world->bodies()), joints.poseOf(live.bodyB, world->bodies()));
+    const simcore::Vec3 liveAnchor = world->centerOfMass(live.bodyA) + geometry.armA;
+    const simcore::Vec3 liveLocal = glm::inverse(world->orientation(live.bodyA)) * (liveAnchor - world->position(live.bodyA));
+    QVERIFY2(glm::length(liveLocal - authoredLocal) < 1e-4f, "the anchor follows body A");
+    QVERIFY(world->jointError(simulation->jointIds()[0]).position < 1e-4f);  // satisfied where the bodies are
+    // A change of the joint re-creates it in the running world; undo and redo follow.
+    simcore::SceneJoint rigid = joint;
+    rigid.joint.collideConnected = true;
+    document->undoStack()->push(new interplay::ChangeJoints(document, "Collide", interplay::JointField::CollideConnected, {0}, {rigid}));
+    QCOMPARE(world->joints().joints[std::size_t(world->joints().denseIndex(simulation->jointIds()[0]))].collideConnected, true);
+    document->undoStack()->undo();
+    document->undoStack()->undo();
+    QCOMPARE(world->jointCount(), std::size_t(0));
+    QVERIFY(liveStates(*world) == run);
+}
+
+void TestMainWindow::draggingInABigSceneMovesOneBodyInPlace() {
+    QString error;
+    QVERIFY2(m_window->openFile(INTERPLAY_SOURCE_DIR "/scenes/pile1k.json", &error), qPrintable(error));
+    interplay::Viewport* viewport = m_window->viewport();
+    interplay::SceneDocument* document = m_window->document();
+    interplay::SimulationController* simulation = m_window->simulation();
+    QVERIFY(document->bodyCount() >= 1000);
+    viewport->grabViewport();  // frames the scene
+    QPoint from;
+    int dragged = -1;
+    for (int y = viewport->height() / 3; y < viewport->height() && dragged < 1; y += 9) {
+        for (int x = viewport->width() / 3; x < 2 * viewport->width() / 3 && dragged < 1; x += 9) {
+            from = QPoint(x, y);
+            dragged = viewport->sceneBodyAt(from);
+        }
+    }
+    QVERIFY2(dragged >= 1, "a body under the cursor");
+    const simcore::World* world = simulation->world();
+    const auto before = liveStates(*world);
+    const std::string name = document->body(dragged).body.name;
+    QSignalSpy rebuilt(simulation, &interplay::SimulationController::worldRebuilt);
+    QTest::mousePress(viewport, Qt::LeftButton, {}, from);
+    for (int i = 1; i <= 20; ++i) QTest::mouseMove(viewport, from + QPoint(3 * i, 0));
+    QTest::mouseRelease(viewport, Qt::LeftButton, {}, from + QPoint(60, 0));
+
+    // One undo entry, the same world, one body moved: no rebuild on any mouse move.
+    QCOMPARE(document->undoStack()->count(), 1);
+    QCOMPARE(rebuilt.count(), 0);
+    QCOMPARE(simulation->world(), world);
+    const simcore::BodyId id = simulation->bodyIds()[std::size_t(dragged)];
+    QVERIFY(glm::length(world->position(id) - document->body(dragged).body.position) < 1e-4f);
+    QVERIFY(glm::length(world->position(id) - before.at(name).position) > 0.1f);
+    auto after = liveStates(*world);
+    after.erase(name);
+    auto others = before;
+    others.erase(name);
+    QVERIFY(after == others);
+
+    // The first step runs the edited scene exactly as saved: the world is built afresh once.
+    simulation->stepFrames(1);
+    QCOMPARE(rebuilt.count(), 1);
+    simcore::Scene scene = document->scene();
+    simcore::BuiltWorld fresh = simcore::buildWorld(scene);
+    fresh.world.step();
+    for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+        QCOMPARE(simulation->world()->position(simulation->bodyIds()[i]), fresh.world.position(fresh.bodyIds[i]));
+    }
+}
+
+void TestMainWindow::addJointActionsFollowTheSelection() {
+    interplay::SceneDocument* document = m_window->document();
+    QAction* hinge = m_window->action("addHingeJoint");
+    QVERIFY(hinge);
+    document->setSelectedBodies({});
+    QVERIFY(!hinge->isEnabled());
+    QVERIFY2(hinge->statusTip().contains("Select two bodies"), qPrintable(hinge->statusTip()));
+    document->setSelectedBodies({1, 2, 3});
+    QVERIFY(!hinge->isEnabled());
+    document->setSelectedBodies({0});  // the ground: nothing for a joint to move
+    QVERIFY(!hinge->isEnabled());
+    QVERIFY2(hinge->statusTip().contains("dynamic"), qPrintable(hinge->statusTip()));
+
+    document->setSelectedBodies({1, 2});
+    QVERIFY(hinge->isEnabled());
+    QCOMPARE(hinge->statusTip(), QString("Join %1 and %2 with a hinge joint").arg(document->bodyName(1), document->bodyName(2)));
+    hinge->trigger();
+    QCOMPARE(document->jointCount(), 1);
+    QCOMPARE(document->undoStack()->undoText(), QString("Add Hinge Joint"));
+    QCOMPARE(document->selectedJoints(), QList<int>{0});
+    QCOMPARE(m_window->simulation()->world()->jointCount(), std::size_t(1));
+    QVERIFY(m_window->inspector()->numberField("axis.x")->isVisibleTo(m_window->inspector()));
+
+    document->setSelectedBodies({4});
+    QVERIFY(m_window->action("addSliderJoint")->statusTip().contains("to the world"));
+    m_window->action("addSliderJoint")->trigger();
+    QCOMPARE(document->jointCount(), 2);
+    QVERIFY(!document->joint(1).bodyB);
+    // The Add menu lists every kind.
+    auto* menu = m_window->findChild<QMenu*>("addJointMenu");
+    QVERIFY(menu);
+    QCOMPARE(menu->actions().size(), 5);
+
+    document->undoStack()->undo();
+    document->undoStack()->undo();
+    QCOMPARE(m_window->simulation()->world()->jointCount(), std::size_t(0));
+    QVERIFY(!m_window->isWindowModified());
+}
+
+void TestMainWindow::deletingABodyTakesItsJointsInOneStep() {
+    interplay::SceneDocument* document = m_window->document();
+    const simcore::World* world = m_window->simulation()->world();
+    document->setSelectedBodies({1, 2});
+    m_window->action("addHingeJoint")->trigger();
+    document->setSelectedBodies({2, 3});
+    m_window->action("addDistanceJoint")->trigger();
+    QCOMPARE(world->jointCount(), std::size_t(2));
+    const int entries = document->undoStack()->count();
+
+    document->setSelectedBodies({2});  // the sphere: in both joints
+    m_window->action("delete")->trigger();
+    QCOMPARE(document->jointCount(), 0);
+    QCOMPARE(world->jointCount(), std::size_t(0));
+    QCOMPARE(document->undoStack()->count(), entries + 1);
+    document->undoStack()->undo();
+    QCOMPARE(document->jointCount(), 2);
+    QCOMPARE(world->jointCount(), std::size_t(2));
+    QCOMPARE(document->joint(1).bodyA, std::size_t(2));
+
+    // Delete on a selected joint deletes just it.
+    document->setSelectedJoints({1});
+    m_window->action("delete")->trigger();
+    QCOMPARE(document->undoStack()->undoText(), QString("Delete Joint 2"));
+    QCOMPARE(document->jointCount(), 1);
+    QCOMPARE(document->bodyCount(), 6);
+    QCOMPARE(world->jointCount(), std::size_t(1));
+}
+
+void TestMainWindow::jointsAreSelectedInTheTreeAndDrawnHighlighted() {
+    interplay::SceneDocument* document = m_window->document();
+    QTreeView* tree = m_window->sceneTree();
+    interplay::SceneTreeModel* model = m_window->sceneTreeModel();
+    interplay::Viewport* viewport = m_window->viewport();
+    document->setSelectedBodies({1, 2});
+    m_window->action("addHingeJoint")->trigger();
+    document->setSelection({}, {});
+    const QImage plain = viewport->grabViewport();
+
+    tree->selectionModel()->select(model->indexOfJoint(0), QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
+    QCOMPARE(document->selectedJoints(), QList<int>{0});
+    QVERIFY(document->selectedBodies().isEmpty());
+    const QImage highlighted = viewport->grabViewport();
+    int differing = 0;
+    for (int y = 0; y < plain.height(); ++y) {
+        for (int x = 0; x < plain.width(); ++x) differing += plain.pixel(x, y) != highlighted.pixel(x, y);
+    }
+    QVERIFY2(differing > 50, qPrintable(QString("%1 pixels differ").arg(differing)));
+
+    // And back: the document's selection shows in the tree.
+    document->setSelectedBodies({3});
+    document->setSelectedJoints({0});
+    const QModelIndexList rows = tree->selectionModel()->selectedRows();
+    QCOMPARE(rows.size(), 1);
+    QCOMPARE(model->jointIndexOf(rows.first()), 0);
+    QCOMPARE(document->undoStack()->count(), 1);
 }
 
 void TestMainWindow::overlaysAndSleepingTintAreDrawn() {

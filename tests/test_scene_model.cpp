@@ -1,6 +1,7 @@
 // The Scene dock's item model: checked by QAbstractItemModelTester through every kind of edit
-// (insert, remove, move, rename, whole-scene replace, undo and redo), rename in place and drag to
-// reorder as undoable commands, and the rows following the document.
+// (insert, remove, move, rename, whole-scene replace, joints added, changed and deleted with their
+// bodies, undo and redo), rename in place and drag to reorder as undoable commands, and the rows
+// following the document.
 
 #include "app/document/body_templates.h"
 #include "app/document/scene_document.h"
@@ -47,6 +48,7 @@ private slots:
     void staysConsistentThroughEveryEdit();
     void renameInPlaceIsUndoable();
     void jointsAreListedWithTheirBodies();
+    void jointEditsKeepTheModelConsistent();
     void dragToReorderIsOneUndoableEntry_data();
     void dragToReorderIsOneUndoableEntry();
     void dropWhereTheyAreChangesNothing();
@@ -166,7 +168,14 @@ void TestSceneModel::jointsAreListedWithTheirBodies() {
     QCOMPARE(m_model->index(1, SceneTreeModel::NameColumn, joints).data().toString(), QString("ball joint"));
     QVERIFY(m_model->index(1, SceneTreeModel::DetailsColumn, joints).data().toString().endsWith("world"));
     QCOMPARE(m_model->bodyIndexOf(m_model->index(0, 0, joints)), -1);
-    QVERIFY(!(m_model->flags(m_model->index(0, 0, joints)) & Qt::ItemIsSelectable));
+    QCOMPARE(m_model->jointIndexOf(m_model->index(1, 0, joints)), 1);
+    QCOMPARE(m_model->jointIndexOf(m_model->indexOfBody(1)), -1);
+    QCOMPARE(m_model->indexOfJoint(1, SceneTreeModel::TypeColumn), m_model->index(1, SceneTreeModel::TypeColumn, joints));
+    QVERIFY(!m_model->indexOfJoint(2).isValid());
+    // Selectable (the Inspector edits a selected joint), but neither renamed in place nor dragged.
+    const Qt::ItemFlags jointFlags = m_model->flags(m_model->index(0, 0, joints));
+    QVERIFY(jointFlags & Qt::ItemIsSelectable);
+    QVERIFY(!(jointFlags & (Qt::ItemIsEditable | Qt::ItemIsDragEnabled)));
 
     // Renaming a body shows in its joints; deleting it removes them, undo brings them back.
     QVERIFY(m_model->setData(m_model->indexOfBody(2), "Frame"));
@@ -178,6 +187,53 @@ void TestSceneModel::jointsAreListedWithTheirBodies() {
     m_document->undoStack()->undo();
     QCOMPARE(m_model->rowCount(joints), 2);
     QCOMPARE(m_model->index(0, SceneTreeModel::NameColumn, joints).data().toString(), QString("door"));
+}
+
+void TestSceneModel::jointEditsKeepTheModelConsistent() {
+    QUndoStack* stack = m_document->undoStack();
+    const QModelIndex joints = m_model->jointsGroup();
+    const auto addJoint = [this, stack](simcore::JointType type, int a, std::optional<int> b) {
+        stack->push(new interplay::AddJoint(
+            m_document.get(), "Add", m_document->jointCount(),
+            interplay::templateJoint(type, m_document->uniqueJointName("Joint"), m_document->scene().bodies, std::size_t(a),
+                                     b ? std::optional<std::size_t>(std::size_t(*b)) : std::nullopt)));
+    };
+    addJoint(simcore::JointType::Hinge, 1, 2);
+    addJoint(simcore::JointType::Ball, 3, std::nullopt);
+    addJoint(simcore::JointType::Distance, 2, 4);
+    QCOMPARE(m_model->rowCount(joints), 3);
+    QCOMPARE(joints.data().toString(), QString("Joints (3)"));
+    QCOMPARE(m_model->indexOfJoint(2, SceneTreeModel::TypeColumn).data().toString(), QString("distance"));
+
+    // A rename shows in the joint's row, and only there.
+    QSignalSpy dataChanged(m_model.get(), &QAbstractItemModel::dataChanged);
+    simcore::SceneJoint renamed = m_document->joint(1);
+    renamed.joint.name = "Shoulder";
+    stack->push(new interplay::ChangeJoints(m_document.get(), "Rename", interplay::JointField::Name, {1}, {renamed}));
+    QCOMPARE(dataChanged.count(), 1);
+    QCOMPARE(dataChanged.first().at(0).toModelIndex(), m_model->indexOfJoint(1, SceneTreeModel::NameColumn));
+    QCOMPARE(m_model->indexOfJoint(1).data().toString(), QString("Shoulder"));
+
+    // Deleting the sphere takes two joints; with a joint of its own named too, one entry.
+    QSignalSpy removed(m_model.get(), &QAbstractItemModel::rowsRemoved);
+    stack->push(new interplay::RemoveBodies(m_document.get(), {2}, {1}));
+    QCOMPARE(removed.count(), 4);  // three joints, then the body
+    QCOMPARE(m_model->rowCount(joints), 0);
+    const auto jointNames = [this, joints] {
+        QStringList names;
+        for (int row = 0; row < m_model->rowCount(joints); ++row) names << m_model->index(row, 0, joints).data().toString();
+        return names;
+    };
+    while (stack->canUndo()) {
+        stack->undo();
+        QCOMPARE(m_model->rowCount(joints), m_document->jointCount());
+        QCOMPARE(rowNames(*m_model), bodyNames(*m_document));
+    }
+    QVERIFY(jointNames().isEmpty());
+    while (stack->canRedo()) stack->redo();
+    QCOMPARE(m_model->rowCount(joints), 0);
+    stack->undo();
+    QCOMPARE(jointNames(), (QStringList{"Joint 1", "Shoulder", "Joint 3"}));
 }
 
 void TestSceneModel::dragToReorderIsOneUndoableEntry_data() {

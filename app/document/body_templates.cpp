@@ -58,6 +58,48 @@ simcore::SceneBody templateBody(simcore::ShapeType type, const QString& name, co
     return body;
 }
 
+simcore::SceneJoint templateJoint(simcore::JointType type, const QString& name, const std::vector<simcore::SceneBody>& bodies,
+                                  std::size_t bodyA, std::optional<std::size_t> bodyB) {
+    const simcore::Vec3 up(0.0f, 1.0f, 0.0f);
+    simcore::SceneJoint joint;
+    joint.bodyA = bodyA;
+    joint.bodyB = bodyB;
+    simcore::JointCreationSettings& s = joint.joint;
+    s.name = name.toStdString();
+    s.type = type;
+    const simcore::Vec3 a = bodies.at(bodyA).body.position;
+    if (!bodyB) {
+        s.anchor = a;
+        s.anchorB = a + up;
+        s.axis = type == simcore::JointType::Hinge ? simcore::Vec3(0.0f, 0.0f, 1.0f) : up;
+        return joint;
+    }
+    const simcore::Vec3 b = bodies.at(*bodyB).body.position;
+    const simcore::Vec3 line = b - a;
+    const float length = glm::length(line);
+    const simcore::Vec3 along = length > 1e-6f ? line / length : up;
+    const simcore::Vec3 across = glm::cross(along, up);
+    s.anchor = type == simcore::JointType::Distance ? a : 0.5f * (a + b);
+    s.anchorB = b;
+    if (type == simcore::JointType::Hinge) {
+        s.axis = glm::length(across) > 1e-3f ? glm::normalize(across) : simcore::Vec3(0.0f, 0.0f, 1.0f);
+    } else {
+        s.axis = along;
+    }
+    return joint;
+}
+
+QString jointTypeDisplayName(simcore::JointType type) {
+    switch (type) {
+    case simcore::JointType::Ball: return QCoreApplication::translate("interplay::joints", "Ball");
+    case simcore::JointType::Hinge: return QCoreApplication::translate("interplay::joints", "Hinge");
+    case simcore::JointType::Slider: return QCoreApplication::translate("interplay::joints", "Slider");
+    case simcore::JointType::Fixed: return QCoreApplication::translate("interplay::joints", "Fixed");
+    case simcore::JointType::Distance: return QCoreApplication::translate("interplay::joints", "Distance");
+    }
+    return {};
+}
+
 QString shapeDisplayName(simcore::ShapeType type) {
     switch (type) {
     case simcore::ShapeType::Box: return QCoreApplication::translate("interplay::shapes", "Box");

@@ -1,6 +1,9 @@
 #include "app/document/scene_document.h"
 
+#include "app/document/scene_edits.h"
+
 #include "simcore/io/scene_io.h"
+#include "simcore/world/world.h"
 
 #include <QFile>
 #include <QFileInfo>
@@ -48,6 +51,17 @@ bool SceneDocument::load(const QString& path, QString* error) {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly)) {
         if (error) *error = tr("%1: %2").arg(path, file.errorString());
+        return false;
+    }
+    // The loader refuses text over this size too (kMaxTextBytes in simcore/io/json_reader.h, internal to
+    // simcore; test_editor_soak checks that both give this message). Checked on the file's size, so a
+    // huge file is refused without reading it into memory.
+    constexpr qint64 kMaxSceneFileBytes = 64ll * 1024 * 1024;
+    if (file.size() > kMaxSceneFileBytes) {
+        simcore::Diagnostic tooLarge;
+        tooLarge.file = path.toStdString();
+        tooLarge.message = "the file is larger than " + std::to_string(kMaxSceneFileBytes >> 20) + " MiB; it is not a scene";
+        if (error) *error = QString::fromStdString(tooLarge.toString());
         return false;
     }
     const QByteArray text = file.readAll();
@@ -141,20 +155,57 @@ QString SceneDocument::uniqueBodyName(const QString& base, const QStringList& al
     }
 }
 
-void SceneDocument::setSelectedBodies(QList<int> indices) {
-    std::sort(indices.begin(), indices.end());
-    indices.erase(std::unique(indices.begin(), indices.end()), indices.end());
-    indices.removeIf([this](int i) { return i < 0 || i >= bodyCount(); });
-    if (indices == m_selection) return;
-    m_selection = std::move(indices);
+QString SceneDocument::uniqueJointName(const QString& base) const {
+    for (int n = 1;; ++n) {
+        const QString candidate = QStringLiteral("%1 %2").arg(base).arg(n);
+        const std::string name = candidate.toStdString();
+        if (std::none_of(m_scene.joints.begin(), m_scene.joints.end(),
+                         [&](const simcore::SceneJoint& j) { return j.joint.name == name; }))
+            return candidate;
+    }
+}
+
+QString SceneDocument::jointName(int index) const {
+    const simcore::JointCreationSettings& settings = joint(index).joint;
+    if (!settings.name.empty()) return QString::fromStdString(settings.name);
+    return tr("%1 joint").arg(QString::fromLatin1(simcore::jointTypeName(settings.type)));
+}
+
+QString SceneDocument::jointProblem(const simcore::SceneJoint& joint) const {
+    if (joint.bodyA >= m_scene.bodies.size() || (joint.bodyB && *joint.bodyB >= m_scene.bodies.size()))
+        return tr("a body of the joint is missing");
+    // The engine's own checks, on a world holding just the joint's bodies.
+    try {
+        simcore::World probe;
+        simcore::JointCreationSettings settings = joint.joint;
+        settings.bodyA = probe.createBody(m_scene.bodies[joint.bodyA].body);
+        if (joint.bodyB) settings.bodyB = probe.createBody(m_scene.bodies[*joint.bodyB].body);
+        probe.createJoint(settings);
+    } catch (const std::exception& e) {
+        return QString::fromStdString(e.what());
+    }
+    return {};
+}
+
+void SceneDocument::setSelection(QList<int> bodies, QList<int> joints) {
+    const auto tidy = [](QList<int>& indices, int count) {
+        std::sort(indices.begin(), indices.end());
+        indices.erase(std::unique(indices.begin(), indices.end()), indices.end());
+        indices.removeIf([count](int i) { return i < 0 || i >= count; });
+    };
+    tidy(bodies, bodyCount());
+    tidy(joints, jointCount());
+    if (bodies == m_selection && joints == m_selectedJoints) return;
+    m_selection = std::move(bodies);
+    m_selectedJoints = std::move(joints);
     emit selectionChanged();
 }
 
 void SceneDocument::insertBody(int index, simcore::SceneBody body) {
     Q_ASSERT(index >= 0 && index <= bodyCount());
     emit bodyAboutToBeInserted(index);
-    m_scene.bodies.insert(m_scene.bodies.begin() + index, std::move(body));
-    renumberBodies([index](int i) { return i >= index ? i + 1 : i; });
+    insertSceneBody(m_scene, index, std::move(body));
+    renumberSelection([index](int i) { return indexAfterInsert(i, index); });
     emit bodyInserted(index);
 }
 
@@ -162,10 +213,9 @@ simcore::SceneBody SceneDocument::takeBody(int index) {
     Q_ASSERT(index >= 0 && index < bodyCount());
     Q_ASSERT(jointsOf(index).isEmpty());
     emit bodyAboutToBeRemoved(index);
-    simcore::SceneBody body = std::move(m_scene.bodies[static_cast<std::size_t>(index)]);
-    m_scene.bodies.erase(m_scene.bodies.begin() + index);
+    simcore::SceneBody body = takeSceneBody(m_scene, index);
     const bool wasSelected = m_selection.removeAll(index) > 0;
-    renumberBodies([index](int i) { return i > index ? i - 1 : i; });
+    renumberSelection([index](int i) { return indexAfterRemove(i, index); });
     emit bodyRemoved(index);
     if (wasSelected) emit selectionChanged();
     return body;
@@ -175,36 +225,22 @@ void SceneDocument::moveBody(int from, int to) {
     Q_ASSERT(from >= 0 && from < bodyCount() && to >= 0 && to < bodyCount());
     if (from == to) return;
     emit bodyAboutToBeMoved(from, to);
-    auto& bodies = m_scene.bodies;
-    if (from < to) {
-        std::rotate(bodies.begin() + from, bodies.begin() + from + 1, bodies.begin() + to + 1);
-    } else {
-        std::rotate(bodies.begin() + to, bodies.begin() + from, bodies.begin() + from + 1);
-    }
     // Selection and joints follow the bodies, not the rows.
-    renumberBodies([from, to](int i) {
-        if (i == from) return to;
-        if (from < to && i > from && i <= to) return i - 1;
-        if (to < from && i >= to && i < from) return i + 1;
-        return i;
-    });
+    moveSceneBody(m_scene, from, to);
+    renumberSelection([from, to](int i) { return indexAfterMove(i, from, to); });
     emit bodyMoved(from, to);
 }
 
-void SceneDocument::renumberBodies(const std::function<int(int)>& newIndex) {
+void SceneDocument::renumberSelection(const std::function<int(int)>& newIndex) {
     for (int& selected : m_selection) selected = newIndex(selected);
     std::sort(m_selection.begin(), m_selection.end());
-    const auto renumber = [&newIndex](std::size_t& body) { body = static_cast<std::size_t>(newIndex(static_cast<int>(body))); };
-    for (simcore::SceneJoint& joint : m_scene.joints) {
-        renumber(joint.bodyA);
-        if (joint.bodyB) renumber(*joint.bodyB);
-    }
 }
 
 void SceneDocument::insertJoint(int index, simcore::SceneJoint joint) {
     Q_ASSERT(index >= 0 && index <= jointCount());
     emit jointAboutToBeInserted(index);
     m_scene.joints.insert(m_scene.joints.begin() + index, std::move(joint));
+    for (int& selected : m_selectedJoints) selected = indexAfterInsert(selected, index);
     emit jointInserted(index);
 }
 
@@ -213,7 +249,10 @@ simcore::SceneJoint SceneDocument::takeJoint(int index) {
     emit jointAboutToBeRemoved(index);
     simcore::SceneJoint joint = std::move(m_scene.joints[static_cast<std::size_t>(index)]);
     m_scene.joints.erase(m_scene.joints.begin() + index);
+    const bool wasSelected = m_selectedJoints.removeAll(index) > 0;
+    for (int& selected : m_selectedJoints) selected = indexAfterRemove(selected, index);
     emit jointRemoved(index);
+    if (wasSelected) emit selectionChanged();
     return joint;
 }
 
@@ -232,6 +271,11 @@ void SceneDocument::setBody(int index, simcore::SceneBody body, BodyField field)
     emit bodyChanged(index, field);
 }
 
+void SceneDocument::setJoint(int index, simcore::SceneJoint joint, JointField field) {
+    m_scene.joints.at(static_cast<std::size_t>(index)) = std::move(joint);
+    emit jointChanged(index, field);
+}
+
 void SceneDocument::setSettings(const simcore::WorldSettings& settings) {
     m_scene.settings = settings;
     emit settingsChanged();
@@ -240,6 +284,7 @@ void SceneDocument::setSettings(const simcore::WorldSettings& settings) {
 void SceneDocument::replaceScene(simcore::Scene scene, const QString& filePath, bool startModified) {
     m_scene = std::move(scene);
     m_selection.clear();
+    m_selectedJoints.clear();
     // History refers to the old scene; a fresh document starts with no history.
     m_undoStack->clear();
     if (startModified) {

@@ -37,6 +37,19 @@ enum class BodyField {
     Ccd,
 };
 
+// What an edit of a joint changed (continuous edits of the same field merge).
+enum class JointField {
+    Name,
+    Anchor,
+    AnchorB,  // a distance joint's point on body B
+    Axis,
+    Limits,   // on/off and bounds
+    Motor,    // on/off, speed and maximum force or torque
+    Lengths,  // a distance joint's minimum and maximum length
+    Spring,
+    CollideConnected,
+};
+
 class SceneDocument : public QObject {
     Q_OBJECT
 
@@ -50,6 +63,8 @@ public:
     QString bodyName(int index) const { return QString::fromStdString(body(index).body.name); }
     int jointCount() const { return static_cast<int>(m_scene.joints.size()); }
     const simcore::SceneJoint& joint(int index) const { return m_scene.joints.at(static_cast<std::size_t>(index)); }
+    // The joint's name, or "hinge joint" for an unnamed one (never its row: rows shift).
+    QString jointName(int index) const;
     QUndoStack* undoStack() const { return m_undoStack; }
 
     // Absolute path of the file the scene is saved in; empty for a new or imported scene.
@@ -82,10 +97,18 @@ public:
     // "Box 3": the base name with the smallest number no body uses yet (nor any of `alsoTaken`,
     // names about to be added).
     QString uniqueBodyName(const QString& base, const QStringList& alsoTaken = {}) const;
+    // "Joint 2": as uniqueBodyName, among the joints.
+    QString uniqueJointName(const QString& base) const;
+    // Why the engine would refuse `joint` between this scene's bodies, or an empty string.
+    QString jointProblem(const simcore::SceneJoint& joint) const;
 
     // ---- Selection (not part of the history; never dirties the document) ----
+    // Bodies and joints by index: sorted, deduplicated, out-of-range dropped.
     const QList<int>& selectedBodies() const { return m_selection; }
-    void setSelectedBodies(QList<int> indices);  // sorted, deduplicated, out-of-range dropped
+    const QList<int>& selectedJoints() const { return m_selectedJoints; }
+    void setSelection(QList<int> bodies, QList<int> joints);
+    void setSelectedBodies(QList<int> indices) { setSelection(std::move(indices), {}); }
+    void setSelectedJoints(QList<int> indices) { setSelection({}, std::move(indices)); }
 
     // ---- Edits: called by undo commands only ----
     // Joints refer to bodies by index: inserting, removing and moving bodies renumbers them. A
@@ -98,6 +121,7 @@ public:
     // Indices of the joints attached to body `index`, ascending.
     QList<int> jointsOf(int index) const;
     void setBody(int index, simcore::SceneBody body, BodyField field);
+    void setJoint(int index, simcore::SceneJoint joint, JointField field);
     void setSettings(const simcore::WorldSettings& settings);
 
 signals:
@@ -117,6 +141,7 @@ signals:
     void jointInserted(int index);
     void jointAboutToBeRemoved(int index);
     void jointRemoved(int index);
+    void jointChanged(int index, interplay::JointField field);
     void selectionChanged();
     // The scene was written to `path` (the file watcher re-arms on it).
     void saved(const QString& path);
@@ -124,8 +149,8 @@ signals:
 private:
     void replaceScene(simcore::Scene scene, const QString& filePath, bool startModified);
     void setFilePath(const QString& filePath);
-    // Renumbers the bodies the joints refer to (and the selection) after bodies changed places.
-    void renumberBodies(const std::function<int(int)>& newIndex);
+    // Renumbers the selected bodies after bodies changed places.
+    void renumberSelection(const std::function<int(int)>& newIndex);
 
     simcore::Scene m_scene;
     QUndoStack* m_undoStack = nullptr;
@@ -133,8 +158,10 @@ private:
     QString m_importedName;  // file name of an imported thesis scene, for the title
     QStringList m_loadWarnings;
     QList<int> m_selection;
+    QList<int> m_selectedJoints;
 };
 
 }  // namespace interplay
 
 Q_DECLARE_METATYPE(interplay::BodyField)
+Q_DECLARE_METATYPE(interplay::JointField)

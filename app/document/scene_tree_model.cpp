@@ -71,6 +71,9 @@ SceneTreeModel::SceneTreeModel(SceneDocument* document, QObject* parent)
         endRemoveRows();
         emit dataChanged(jointsGroup(), jointsGroup());
     });
+    connect(document, &SceneDocument::jointChanged, this, [this](int index) {
+        emit dataChanged(indexOfJoint(index, NameColumn), indexOfJoint(index, ColumnCount - 1));
+    });
 }
 
 QModelIndex SceneTreeModel::indexOfBody(int bodyIndex, int column) const {
@@ -80,6 +83,15 @@ QModelIndex SceneTreeModel::indexOfBody(int bodyIndex, int column) const {
 
 int SceneTreeModel::bodyIndexOf(const QModelIndex& index) const {
     return index.isValid() && index.internalId() == kBodyId ? index.row() : -1;
+}
+
+QModelIndex SceneTreeModel::indexOfJoint(int jointIndex, int column) const {
+    if (jointIndex < 0 || jointIndex >= m_document->jointCount()) return {};
+    return createIndex(jointIndex, column, kJointId);
+}
+
+int SceneTreeModel::jointIndexOf(const QModelIndex& index) const {
+    return index.isValid() && index.internalId() == kJointId ? index.row() : -1;
 }
 
 void SceneTreeModel::jointDetailsChanged() {
@@ -144,8 +156,7 @@ QVariant SceneTreeModel::jointData(int row, int column, int role) const {
     const QString bodies = tr("%1 – %2").arg(m_document->bodyName(static_cast<int>(joint.bodyA)),
                                              joint.bodyB ? m_document->bodyName(static_cast<int>(*joint.bodyB)) : tr("world"));
     const QString type = QString::fromLatin1(simcore::jointTypeName(joint.joint.type));
-    // Unnamed joints are called by their kind, never by their row: rows shift as joints come and go.
-    const QString name = joint.joint.name.empty() ? tr("%1 joint").arg(type) : QString::fromStdString(joint.joint.name);
+    const QString name = m_document->jointName(row);
     if (role == Qt::ToolTipRole) return tr("%1: %2 joint, %3").arg(name, type, bodies);
     switch (column) {
     case NameColumn: return name;
@@ -184,7 +195,7 @@ Qt::ItemFlags SceneTreeModel::flags(const QModelIndex& index) const {
     if (index.internalId() == kGroupId) {
         return index.row() == kBodiesGroupRow ? Qt::ItemIsEnabled | Qt::ItemIsDropEnabled : Qt::ItemIsEnabled;
     }
-    if (index.internalId() == kJointId) return Qt::ItemIsEnabled;  // listed; edited in the file for now
+    if (index.internalId() == kJointId) return Qt::ItemIsEnabled | Qt::ItemIsSelectable;  // edited in the Inspector
     Qt::ItemFlags flags = Qt::ItemIsEnabled | Qt::ItemIsSelectable | Qt::ItemIsDragEnabled;
     if (index.column() == NameColumn) flags |= Qt::ItemIsEditable;
     return flags;

@@ -2,8 +2,8 @@
 // The scene as a tree for the Scene dock: a group row per kind of object, "Bodies" and "Joints",
 // the objects under it in scene order. Bodies can be renamed (setData) and dragged to a new place
 // (dropMimeData), both as undo commands on the document; joints are listed with the bodies they
-// join. The model follows the document's signals, so undo and redo update it the same way as the
-// original edit.
+// join, and can be selected (the Inspector edits them). The model follows the document's signals,
+// so undo and redo update it the same way as the original edit.
 
 #include <QAbstractItemModel>
 
@@ -26,6 +26,9 @@ public:
     // The index of body `bodyIndex` (column 0), and back; -1 for anything that is not a body.
     QModelIndex indexOfBody(int bodyIndex, int column = NameColumn) const;
     int bodyIndexOf(const QModelIndex& index) const;
+    // The same for joints.
+    QModelIndex indexOfJoint(int jointIndex, int column = NameColumn) const;
+    int jointIndexOf(const QModelIndex& index) const;
     QModelIndex bodiesGroup() const { return index(kBodiesGroupRow, 0); }
     QModelIndex jointsGroup() const { return index(kJointsGroupRow, 0); }
 

@@ -1,6 +1,7 @@
 #include "app/document/undo_commands.h"
 
 #include <QCoreApplication>
+#include <QStringList>
 
 #include <algorithm>
 
@@ -9,6 +10,20 @@ namespace interplay {
 QString bodiesLabel(const SceneDocument& document, const QList<int>& indices) {
     if (indices.size() == 1) return document.bodyName(indices.first());
     return QCoreApplication::translate("interplay::undo", "%n Bodies", nullptr, static_cast<int>(indices.size()));
+}
+
+QString jointsLabel(const SceneDocument& document, const QList<int>& indices) {
+    if (indices.size() == 1) return document.jointName(indices.first());
+    return QCoreApplication::translate("interplay::undo", "%n Joints", nullptr, static_cast<int>(indices.size()));
+}
+
+bool sameSceneJoint(const simcore::SceneJoint& a, const simcore::SceneJoint& b) {
+    const simcore::JointCreationSettings& x = a.joint;
+    const simcore::JointCreationSettings& y = b.joint;
+    return a.bodyA == b.bodyA && a.bodyB == b.bodyB && x.name == y.name && x.type == y.type && x.anchor == y.anchor &&
+           x.anchorB == y.anchorB && x.axis == y.axis && x.limits == y.limits && x.motor == y.motor &&
+           x.spring == y.spring && x.minLength == y.minLength && x.maxLength == y.maxLength &&
+           x.collideConnected == y.collideConnected;
 }
 
 bool sameSceneBody(const simcore::SceneBody& a, const simcore::SceneBody& b) {
@@ -44,16 +59,22 @@ void AddBodies::undo() {
 
 // ---- RemoveBodies -------------------------------------------------------------------------------
 
-RemoveBodies::RemoveBodies(SceneDocument* document, QList<int> indices)
-    : m_document(document), m_indices(std::move(indices)) {
-    std::sort(m_indices.begin(), m_indices.end());
-    m_indices.erase(std::unique(m_indices.begin(), m_indices.end()), m_indices.end());
-    setText(QCoreApplication::translate("interplay::undo", "Delete %1").arg(bodiesLabel(*document, m_indices)));
+RemoveBodies::RemoveBodies(SceneDocument* document, QList<int> indices, QList<int> joints)
+    : m_document(document), m_indices(std::move(indices)), m_selectedJoints(std::move(joints)) {
+    for (QList<int>* list : {&m_indices, &m_selectedJoints}) {
+        std::sort(list->begin(), list->end());
+        list->erase(std::unique(list->begin(), list->end()), list->end());
+    }
+    QStringList what;
+    if (!m_indices.isEmpty()) what << bodiesLabel(*document, m_indices);
+    if (!m_selectedJoints.isEmpty()) what << jointsLabel(*document, m_selectedJoints);
+    setText(QCoreApplication::translate("interplay::undo", "Delete %1")
+                .arg(what.join(QCoreApplication::translate("interplay::undo", " and "))));
 }
 
 void RemoveBodies::redo() {
     // Joints first: a joint without its body would refer to whatever takes the body's place.
-    QList<int> joints;
+    QList<int> joints = m_selectedJoints;
     for (int body : m_indices) joints << m_document->jointsOf(body);
     std::sort(joints.begin(), joints.end());
     joints.erase(std::unique(joints.begin(), joints.end()), joints.end());
@@ -71,7 +92,21 @@ void RemoveBodies::redo() {
 void RemoveBodies::undo() {
     for (qsizetype i = 0; i < m_indices.size(); ++i) m_document->insertBody(m_indices[i], m_bodies[static_cast<std::size_t>(i)]);
     for (const auto& [index, joint] : m_joints) m_document->insertJoint(index, joint);
-    m_document->setSelectedBodies(m_indices);
+    m_document->setSelection(m_indices, m_selectedJoints);
+}
+
+// ---- AddJoint -----------------------------------------------------------------------------------
+
+AddJoint::AddJoint(SceneDocument* document, const QString& text, int index, simcore::SceneJoint joint)
+    : QUndoCommand(text), m_document(document), m_index(index), m_joint(std::move(joint)) {}
+
+void AddJoint::redo() {
+    m_document->insertJoint(m_index, m_joint);
+    m_document->setSelectedJoints({m_index});
+}
+
+void AddJoint::undo() {
+    m_document->takeJoint(m_index);
 }
 
 // ---- ReorderBody --------------------------------------------------------------------------------
@@ -90,43 +125,54 @@ void ReorderBody::undo() {
     m_document->moveBody(m_to, m_from);
 }
 
-// ---- ChangeBodies -------------------------------------------------------------------------------
+// ---- ChangeObjects ------------------------------------------------------------------------------
 
-ChangeBodies::ChangeBodies(SceneDocument* document, const QString& text, BodyField field, QList<int> indices,
-                           std::vector<simcore::SceneBody> after, bool mergeable)
+template <typename Object>
+ChangeObjects<Object>::ChangeObjects(SceneDocument* document, const QString& text, Field field, QList<int> indices,
+                                     std::vector<Object> after, bool mergeable)
     : QUndoCommand(text), m_document(document), m_field(field), m_indices(std::move(indices)),
       m_after(std::move(after)), m_mergeable(mergeable) {
     Q_ASSERT(static_cast<std::size_t>(m_indices.size()) == m_after.size());
     m_before.reserve(m_after.size());
-    for (int index : m_indices) m_before.push_back(document->body(index));
+    for (int index : m_indices) m_before.push_back(ObjectAccess<Object>::get(*document, index));
     updateObsolete();
 }
 
-bool ChangeBodies::mergeWith(const QUndoCommand* other) {
-    const auto* next = static_cast<const ChangeBodies*>(other);
+template <typename Object>
+bool ChangeObjects<Object>::mergeWith(const QUndoCommand* other) {
+    const auto* next = static_cast<const ChangeObjects*>(other);
     if (!next->m_mergeable || next->m_field != m_field || next->m_indices != m_indices) return false;
     m_after = next->m_after;
     updateObsolete();
     return true;
 }
 
-void ChangeBodies::redo() {
+template <typename Object>
+void ChangeObjects<Object>::redo() {
     apply(m_after);
 }
 
-void ChangeBodies::undo() {
+template <typename Object>
+void ChangeObjects<Object>::undo() {
     apply(m_before);
 }
 
-void ChangeBodies::apply(const std::vector<simcore::SceneBody>& values) {
-    for (qsizetype i = 0; i < m_indices.size(); ++i) m_document->setBody(m_indices[i], values[static_cast<std::size_t>(i)], m_field);
+template <typename Object>
+void ChangeObjects<Object>::apply(const std::vector<Object>& values) {
+    for (qsizetype i = 0; i < m_indices.size(); ++i) {
+        ObjectAccess<Object>::set(*m_document, m_indices[i], values[static_cast<std::size_t>(i)], m_field);
+    }
 }
 
-void ChangeBodies::updateObsolete() {
+template <typename Object>
+void ChangeObjects<Object>::updateObsolete() {
     bool unchanged = true;
-    for (std::size_t i = 0; i < m_before.size() && unchanged; ++i) unchanged = sameSceneBody(m_before[i], m_after[i]);
+    for (std::size_t i = 0; i < m_before.size() && unchanged; ++i) unchanged = ObjectAccess<Object>::same(m_before[i], m_after[i]);
     setObsolete(unchanged);
 }
+
+template class ChangeObjects<simcore::SceneBody>;
+template class ChangeObjects<simcore::SceneJoint>;
 
 // ---- ChangeSettings -----------------------------------------------------------------------------
 

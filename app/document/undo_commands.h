@@ -1,8 +1,9 @@
 #pragma once
 // Every edit of a SceneDocument is one of these commands, pushed on the document's undo stack.
-// ChangeBodies is the one generic property command (after Tiled's ChangeValue): it swaps whole
-// SceneBody values, so any field or combination of fields of any set of bodies is one command,
-// and continuous edits of the same field of the same bodies merge into one history entry.
+// ChangeObjects is the one generic property command (after Tiled's ChangeValue): it swaps whole
+// SceneBody (ChangeBodies) or SceneJoint (ChangeJoints) values, so any field or combination of
+// fields of any set of bodies or joints is one command, and continuous edits of the same field of
+// the same objects merge into one history entry.
 
 #include "app/document/scene_document.h"
 
@@ -19,13 +20,17 @@ namespace interplay {
 enum class CommandId : int {
     ChangeBodies = 1,
     ChangeSettings,
+    ChangeJoints,
 };
 
 // "Box 3" for one body, "3 Bodies" for several: the object part of a command's name.
 QString bodiesLabel(const SceneDocument& document, const QList<int>& indices);
+// "Joint 2" for one joint, "3 Joints" for several.
+QString jointsLabel(const SceneDocument& document, const QList<int>& indices);
 
-// Whether two authored bodies are identical in every field (a change to them is a no-op).
+// Whether two authored bodies (joints) are identical in every field (a change to them is a no-op).
 bool sameSceneBody(const simcore::SceneBody& a, const simcore::SceneBody& b);
+bool sameSceneJoint(const simcore::SceneJoint& a, const simcore::SceneJoint& b);
 
 // Adds bodies at the given ascending indices (each index as it is after the insertion). Used by
 // Add, Duplicate and Paste-like edits; the new bodies become the selection.
@@ -41,19 +46,34 @@ private:
     std::vector<simcore::SceneBody> m_bodies;
 };
 
-// Removes bodies (any order of indices) and the joints attached to them; undo puts both back
-// where they were.
+// Removes bodies (any order of indices), the joints attached to them and the given `joints`
+// (Delete on a selection of bodies, joints or both) as one step; undo puts all of them back where
+// they were and selects them again.
 class RemoveBodies : public QUndoCommand {
 public:
-    RemoveBodies(SceneDocument* document, QList<int> indices);
+    RemoveBodies(SceneDocument* document, QList<int> indices, QList<int> joints = {});
     void redo() override;
     void undo() override;
 
 private:
     SceneDocument* m_document;
     QList<int> m_indices;                     // ascending
+    QList<int> m_selectedJoints;              // ascending: the joints named, not those attached
     std::vector<simcore::SceneBody> m_bodies; // filled by redo, in m_indices order
     std::vector<std::pair<int, simcore::SceneJoint>> m_joints;  // (index, joint), ascending; by redo
+};
+
+// Adds one joint at `index` ("Add Hinge Joint"); it becomes the selection.
+class AddJoint : public QUndoCommand {
+public:
+    AddJoint(SceneDocument* document, const QString& text, int index, simcore::SceneJoint joint);
+    void redo() override;
+    void undo() override;
+
+private:
+    SceneDocument* m_document;
+    int m_index;
+    simcore::SceneJoint m_joint;
 };
 
 // Moves one body in the scene's order (drag to reorder in the scene tree).
@@ -68,32 +88,66 @@ private:
     int m_from, m_to;
 };
 
-// Replaces the given bodies with new values of one field (`after[i]` for `indices[i]`). A command
+// How ChangeObjects reads, writes and compares one kind of object of the document.
+template <typename Object>
+struct ObjectAccess;
+
+template <>
+struct ObjectAccess<simcore::SceneBody> {
+    using Field = BodyField;
+    static constexpr CommandId kCommandId = CommandId::ChangeBodies;
+    static const simcore::SceneBody& get(const SceneDocument& document, int index) { return document.body(index); }
+    static void set(SceneDocument& document, int index, const simcore::SceneBody& body, BodyField field) {
+        document.setBody(index, body, field);
+    }
+    static bool same(const simcore::SceneBody& a, const simcore::SceneBody& b) { return sameSceneBody(a, b); }
+};
+
+template <>
+struct ObjectAccess<simcore::SceneJoint> {
+    using Field = JointField;
+    static constexpr CommandId kCommandId = CommandId::ChangeJoints;
+    static const simcore::SceneJoint& get(const SceneDocument& document, int index) { return document.joint(index); }
+    static void set(SceneDocument& document, int index, const simcore::SceneJoint& joint, JointField field) {
+        document.setJoint(index, joint, field);
+    }
+    static bool same(const simcore::SceneJoint& a, const simcore::SceneJoint& b) { return sameSceneJoint(a, b); }
+};
+
+// Replaces the given objects with new values of one field (`after[i]` for `indices[i]`). A command
 // created with `mergeable` continues the previous one when it edits the same field of the same
-// bodies (a drag, a slider): the history keeps one entry holding the first "before" and the last
+// objects (a drag, a slider): the history keeps one entry holding the first "before" and the last
 // "after". A change back to the starting values makes the entry obsolete.
-class ChangeBodies : public QUndoCommand {
+template <typename Object>
+class ChangeObjects : public QUndoCommand {
 public:
-    ChangeBodies(SceneDocument* document, const QString& text, BodyField field, QList<int> indices,
-                 std::vector<simcore::SceneBody> after, bool mergeable = false);
-    int id() const override { return static_cast<int>(CommandId::ChangeBodies); }
+    using Field = typename ObjectAccess<Object>::Field;
+
+    ChangeObjects(SceneDocument* document, const QString& text, Field field, QList<int> indices, std::vector<Object> after,
+                  bool mergeable = false);
+    int id() const override { return static_cast<int>(ObjectAccess<Object>::kCommandId); }
     bool mergeWith(const QUndoCommand* other) override;
     void redo() override;
     void undo() override;
 
 private:
-    void apply(const std::vector<simcore::SceneBody>& values);
+    void apply(const std::vector<Object>& values);
     void updateObsolete();
 
     SceneDocument* m_document;
-    BodyField m_field;
+    Field m_field;
     QList<int> m_indices;
-    std::vector<simcore::SceneBody> m_before;
-    std::vector<simcore::SceneBody> m_after;
+    std::vector<Object> m_before;
+    std::vector<Object> m_after;
     bool m_mergeable;
 };
 
-// Replaces the world settings. Like ChangeBodies, a mergeable command continues the previous one
+using ChangeBodies = ChangeObjects<simcore::SceneBody>;
+using ChangeJoints = ChangeObjects<simcore::SceneJoint>;
+extern template class ChangeObjects<simcore::SceneBody>;
+extern template class ChangeObjects<simcore::SceneJoint>;
+
+// Replaces the world settings. Like ChangeObjects, a mergeable command continues the previous one
 // when it has the same `key` (the settings field a control edits, e.g. "gravity").
 class ChangeSettings : public QUndoCommand {
 public:

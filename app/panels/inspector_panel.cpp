@@ -23,6 +23,7 @@
 
 #include <cmath>
 #include <exception>
+#include <type_traits>
 
 namespace interplay {
 namespace {
@@ -36,6 +37,17 @@ constexpr double kMinMass = 1e-6, kMaxMass = 1e9;               // kg
 constexpr double kMinDensity = 1e-3, kMaxDensity = 1e6;         // kg/m^3
 constexpr double kMaxFriction = 100.0;
 constexpr double kMaxAngle = 360.0;                             // degrees
+constexpr double kMaxHingeAngle = 180.0;                        // degrees: limits lie within [-pi, pi]
+constexpr double kMaxMotorForce = 1e12;                         // N or N m
+constexpr double kMaxLength = 1e6;                              // m
+constexpr double kMinSpringHertz = 1e-3, kMaxSpringHertz = 1e4; // Hz
+constexpr double kMaxDampingRatio = 1e4;
+
+// What switching a joint's option on starts from. The motor can move the editor's one-metre
+// template bodies (about 1000 kg at the default density) against gravity.
+constexpr float kDefaultHingeLimit = 0.25f * simcore::kPi;  // rad, either way
+constexpr float kDefaultSliderLimit = 0.5f;                  // m, either way
+constexpr simcore::JointMotor kDefaultMotor{1.0f, 1e4f};     // rad/s or m/s; N m or N
 
 constexpr std::array<simcore::ShapeType, simcore::kShapeTypeCount> kShapeTypes{
     simcore::ShapeType::Box, simcore::ShapeType::Sphere, simcore::ShapeType::Capsule, simcore::ShapeType::Cylinder,
@@ -66,6 +78,26 @@ QColor toQColor(const simcore::Vec3& linear) {
     return QColor::fromRgbF(srgbFromLinear(linear.r), srgbFromLinear(linear.g), srgbFromLinear(linear.b));
 }
 
+bool isHinge(const simcore::SceneJoint& j) {
+    return j.joint.type == simcore::JointType::Hinge;
+}
+
+bool isSlider(const simcore::SceneJoint& j) {
+    return j.joint.type == simcore::JointType::Slider;
+}
+
+bool isHingeOrSlider(const simcore::SceneJoint& j) {
+    return isHinge(j) || isSlider(j);
+}
+
+bool isDistance(const simcore::SceneJoint& j) {
+    return j.joint.type == simcore::JointType::Distance;
+}
+
+bool hasLengthRange(const simcore::SceneJoint& j) {
+    return isDistance(j) && (j.joint.minLength || j.joint.maxLength);
+}
+
 QString motionLabel(simcore::MotionType motion) {
     switch (motion) {
     case simcore::MotionType::Dynamic: return InspectorPanel::tr("Dynamic");
@@ -79,9 +111,23 @@ QString motionLabel(simcore::MotionType motion) {
 
 InspectorPanel::InspectorPanel(SceneDocument* document, QWidget* parent)
     : QWidget(parent), m_document(document), m_header(new QLabel(this)), m_message(new QLabel(this)),
-      m_form(new QWidget), m_layout(new QFormLayout(m_form)), m_name(new QLineEdit), m_shapeType(new QComboBox),
-      m_hullInfo(new QLabel), m_motion(new QComboBox), m_massMode(new QComboBox), m_color(new QPushButton),
-      m_ccd(new QCheckBox(tr("Continuous collision (CCD)"))) {
+      m_bodyForm(new QWidget), m_jointForm(new QWidget),
+      m_bodyRows(new QFormLayout(m_bodyForm),
+                 [this](BodyField field, const QString& what, const auto& change, const auto& appliesTo) {
+                     editBodies(field, what, change, appliesTo);
+                 },
+                 [this](const QString& message) { showMessage(message); }),
+      m_jointRows(new QFormLayout(m_jointForm),
+                  [this](JointField field, const QString& what, const auto& change, const auto& appliesTo) {
+                      editJoints(field, what, change, appliesTo);
+                  },
+                  [this](const QString& message) { showMessage(message); }),
+      m_name(new QLineEdit), m_shapeType(new QComboBox), m_hullInfo(new QLabel), m_motion(new QComboBox),
+      m_massMode(new QComboBox), m_color(new QPushButton), m_ccd(new QCheckBox(tr("Continuous collision (CCD)"))),
+      m_jointName(new QLineEdit), m_jointType(new QLabel), m_jointBodies(new QLabel),
+      m_limits(new QCheckBox(tr("Limits"))), m_motor(new QCheckBox(tr("Motor"))),
+      m_lengths(new QCheckBox(tr("Length range"))), m_spring(new QCheckBox(tr("Spring"))),
+      m_collideConnected(new QCheckBox(tr("The two bodies collide"))) {
     auto* outer = new QVBoxLayout(this);
     QFont bold = m_header->font();
     bold.setBold(true);
@@ -93,20 +139,45 @@ InspectorPanel::InspectorPanel(SceneDocument* document, QWidget* parent)
     m_message->hide();
     outer->addWidget(m_header);
     outer->addWidget(m_message);
+    auto* forms = new QWidget;
+    auto* formsLayout = new QVBoxLayout(forms);
+    formsLayout->setContentsMargins(0, 0, 0, 0);
+    formsLayout->addWidget(m_bodyForm);
+    formsLayout->addWidget(m_jointForm);
+    formsLayout->addStretch(1);
+    for (QWidget* form : {m_bodyForm, m_jointForm}) {
+        auto* layout = static_cast<QFormLayout*>(form->layout());
+        layout->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+        layout->setLabelAlignment(Qt::AlignRight);
+    }
     auto* scroll = new QScrollArea(this);
     scroll->setWidgetResizable(true);
     scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);  // fields shrink to the dock instead
     scroll->setFrameShape(QFrame::NoFrame);
-    scroll->setWidget(m_form);
+    scroll->setWidget(forms);
     outer->addWidget(scroll, 1);
-    m_layout->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
-    m_layout->setLabelAlignment(Qt::AlignRight);
 
+    createBodyRows();
+    createJointRows();
+
+    connect(document, &SceneDocument::selectionChanged, this, &InspectorPanel::refresh);
+    connect(document, &SceneDocument::sceneReplaced, this, &InspectorPanel::refresh);
+    connect(document, &SceneDocument::bodyChanged, this, [this](int index) {
+        // A joint's form names its bodies.
+        if (m_document->selectedBodies().contains(index) || !m_document->selectedJoints().isEmpty()) refresh();
+    });
+    connect(document, &SceneDocument::jointChanged, this, [this](int index) {
+        if (m_document->selectedJoints().contains(index)) refresh();
+    });
+    refresh();
+}
+
+void InspectorPanel::createBodyRows() {
     const auto always = [](const simcore::SceneBody&) { return true; };
 
     // Name: only for one body (several bodies never share a name on purpose).
     m_name->setObjectName(QStringLiteral("name"));
-    addRow(tr("Name"), m_name, always);
+    m_bodyRows.addRow(tr("Name"), m_name, always);
     connect(m_name, &QLineEdit::editingFinished, this, [this] {
         if (m_refreshing || m_document->selectedBodies().size() != 1) return;
         const QString name = m_name->text().trimmed();
@@ -117,56 +188,57 @@ InspectorPanel::InspectorPanel(SceneDocument* document, QWidget* parent)
             showMessage(tr("A body needs a name."));
             return;
         }
-        edit(BodyField::Name, QString(), [&](simcore::SceneBody& b) { b.body.name = name.toStdString(); });
+        editBodies(BodyField::Name, QString(), [&](simcore::SceneBody& b) { b.body.name = name.toStdString(); });
     });
 
     // Shape.
     for (simcore::ShapeType type : kShapeTypes) m_shapeType->addItem(shapeDisplayName(type), static_cast<int>(type));
     m_shapeType->setObjectName(QStringLiteral("shapeType"));
-    addRow(tr("Shape"), m_shapeType, always);
+    m_bodyRows.addRow(tr("Shape"), m_shapeType, always);
     connect(m_shapeType, &QComboBox::activated, this, [this](int row) {
         const auto type = static_cast<simcore::ShapeType>(m_shapeType->itemData(row).toInt());
-        edit(BodyField::Shape, tr("Shape"), [type](simcore::SceneBody& b) {
+        editBodies(BodyField::Shape, tr("Shape"), [type](simcore::SceneBody& b) {
             if (b.body.shape.type != type) b.body.shape = templateShape(type);
         });
     });
-    addVector(QStringLiteral("halfExtents"), tr("Half extents"), tr("Half extent"), kMinSize, kMaxSize, BodyField::Shape,
-              [](const simcore::SceneBody& b, int axis) -> std::optional<double> {
-                  if (b.body.shape.type != simcore::ShapeType::Box) return std::nullopt;
-                  return b.body.shape.halfExtents[axis];
-              },
-              [](simcore::SceneBody& b, int axis, double v) { b.body.shape.halfExtents[axis] = static_cast<float>(v); });
-    addNumber(QStringLiteral("radius"), tr("Radius"), kMinSize, kMaxSize, BodyField::Shape,
-              [](const simcore::SceneBody& b) -> std::optional<double> {
-                  if (!hasRadius(b)) return std::nullopt;
-                  return b.body.shape.radius;
-              },
-              [](simcore::SceneBody& b, double v) { b.body.shape.radius = static_cast<float>(v); });
-    addNumber(QStringLiteral("halfHeight"), tr("Half height"), kMinSize, kMaxSize, BodyField::Shape,
-              [](const simcore::SceneBody& b) -> std::optional<double> {
-                  if (!hasHalfHeight(b)) return std::nullopt;
-                  return b.body.shape.halfHeight;
-              },
-              [](simcore::SceneBody& b, double v) { b.body.shape.halfHeight = static_cast<float>(v); });
-    addRow(tr("Hull"), m_hullInfo, [](const simcore::SceneBody& b) {
+    m_bodyRows.addVector(QStringLiteral("halfExtents"), tr("Half extents"), tr("Half extent"), kMinSize, kMaxSize,
+                         BodyField::Shape,
+                         [](const simcore::SceneBody& b, int axis) -> std::optional<double> {
+                             if (b.body.shape.type != simcore::ShapeType::Box) return std::nullopt;
+                             return b.body.shape.halfExtents[axis];
+                         },
+                         [](simcore::SceneBody& b, int axis, double v) { b.body.shape.halfExtents[axis] = static_cast<float>(v); });
+    m_bodyRows.addNumber(QStringLiteral("radius"), tr("Radius"), kMinSize, kMaxSize, BodyField::Shape,
+                         [](const simcore::SceneBody& b) -> std::optional<double> {
+                             if (!hasRadius(b)) return std::nullopt;
+                             return b.body.shape.radius;
+                         },
+                         [](simcore::SceneBody& b, double v) { b.body.shape.radius = static_cast<float>(v); });
+    m_bodyRows.addNumber(QStringLiteral("halfHeight"), tr("Half height"), kMinSize, kMaxSize, BodyField::Shape,
+                         [](const simcore::SceneBody& b) -> std::optional<double> {
+                             if (!hasHalfHeight(b)) return std::nullopt;
+                             return b.body.shape.halfHeight;
+                         },
+                         [](simcore::SceneBody& b, double v) { b.body.shape.halfHeight = static_cast<float>(v); });
+    m_bodyRows.addRow(tr("Hull"), m_hullInfo, [](const simcore::SceneBody& b) {
         return b.body.shape.type == simcore::ShapeType::ConvexHull;
     });
 
     // Motion and mass.
     for (simcore::MotionType motion : kMotionTypes) m_motion->addItem(motionLabel(motion), static_cast<int>(motion));
     m_motion->setObjectName(QStringLiteral("motion"));
-    addRow(tr("Motion"), m_motion, always);
+    m_bodyRows.addRow(tr("Motion"), m_motion, always);
     connect(m_motion, &QComboBox::activated, this, [this](int row) {
         const auto motion = static_cast<simcore::MotionType>(m_motion->itemData(row).toInt());
-        edit(BodyField::Motion, tr("Motion"), [motion](simcore::SceneBody& b) { b.body.motion = motion; });
+        editBodies(BodyField::Motion, tr("Motion"), [motion](simcore::SceneBody& b) { b.body.motion = motion; });
     });
     m_massMode->addItems({tr("Mass (kg)"), tr("Density (kg/m³)")});
     m_massMode->setObjectName(QStringLiteral("massMode"));
-    addRow(tr("Given by"), m_massMode, isDynamic);
+    m_bodyRows.addRow(tr("Given by"), m_massMode, isDynamic);
     connect(m_massMode, &QComboBox::activated, this, [this](int row) {
         const bool byDensity = row == 1;
         // Switching keeps the body as heavy as it was; only how the file states it changes.
-        edit(BodyField::Mass, tr("Mass"), [byDensity](simcore::SceneBody& b) {
+        editBodies(BodyField::Mass, tr("Mass"), [byDensity](simcore::SceneBody& b) {
             const float volume = simcore::volume(b.body.shape);
             if (byDensity && b.body.mass) {
                 b.body.density = *b.body.mass / volume;
@@ -176,137 +248,302 @@ InspectorPanel::InspectorPanel(SceneDocument* document, QWidget* parent)
             }
         }, isDynamic);
     });
-    addNumber(QStringLiteral("mass"), tr("Mass or density"), kMinMass, kMaxMass, BodyField::Mass,
-              [](const simcore::SceneBody& b) -> std::optional<double> {
-                  if (!isDynamic(b)) return std::nullopt;
-                  return b.body.mass ? *b.body.mass : b.body.density;
-              },
-              [](simcore::SceneBody& b, double v) {
-                  if (b.body.mass) b.body.mass = static_cast<float>(v);
-                  else b.body.density = static_cast<float>(v);
-              });
+    m_bodyRows.addNumber(QStringLiteral("mass"), tr("Mass or density"), kMinMass, kMaxMass, BodyField::Mass,
+                         [](const simcore::SceneBody& b) -> std::optional<double> {
+                             if (!isDynamic(b)) return std::nullopt;
+                             return b.body.mass ? *b.body.mass : b.body.density;
+                         },
+                         [](simcore::SceneBody& b, double v) {
+                             if (b.body.mass) b.body.mass = static_cast<float>(v);
+                             else b.body.density = static_cast<float>(v);
+                         });
 
     // Material.
-    addNumber(QStringLiteral("friction"), tr("Friction"), 0.0, kMaxFriction, BodyField::Friction,
-              [](const simcore::SceneBody& b) -> std::optional<double> { return b.body.friction; },
-              [](simcore::SceneBody& b, double v) { b.body.friction = static_cast<float>(v); });
-    addNumber(QStringLiteral("restitution"), tr("Restitution"), 0.0, 1.0, BodyField::Restitution,
-              [](const simcore::SceneBody& b) -> std::optional<double> { return b.body.restitution; },
-              [](simcore::SceneBody& b, double v) { b.body.restitution = static_cast<float>(v); });
+    m_bodyRows.addNumber(QStringLiteral("friction"), tr("Friction"), 0.0, kMaxFriction, BodyField::Friction,
+                         [](const simcore::SceneBody& b) -> std::optional<double> { return b.body.friction; },
+                         [](simcore::SceneBody& b, double v) { b.body.friction = static_cast<float>(v); });
+    m_bodyRows.addNumber(QStringLiteral("restitution"), tr("Restitution"), 0.0, 1.0, BodyField::Restitution,
+                         [](const simcore::SceneBody& b) -> std::optional<double> { return b.body.restitution; },
+                         [](simcore::SceneBody& b, double v) { b.body.restitution = static_cast<float>(v); });
 
     // Placement and motion state.
-    addVector(QStringLiteral("position"), tr("Position (m)"), tr("Position"), -kMaxCoordinate, kMaxCoordinate,
-              BodyField::Position,
-              [](const simcore::SceneBody& b, int axis) -> std::optional<double> { return b.body.position[axis]; },
-              [](simcore::SceneBody& b, int axis, double v) { b.body.position[axis] = static_cast<float>(v); });
-    addVector(QStringLiteral("orientation"), tr("Orientation (°)"), tr("Angle"), -kMaxAngle, kMaxAngle,
-              BodyField::Orientation,
-              [](const simcore::SceneBody& b, int axis) -> std::optional<double> {
-                  return eulerDegrees(b.body.orientation)[axis];
-              },
-              [](simcore::SceneBody& b, int axis, double v) {
-                  simcore::Vec3 angles = eulerDegrees(b.body.orientation);
-                  angles[axis] = static_cast<float>(v);
-                  b.body.orientation = glm::normalize(simcore::Quat(glm::radians(angles)));
-              });
-    addVector(QStringLiteral("linearVelocity"), tr("Velocity (m/s)"), tr("Velocity"), -kMaxSpeed, kMaxSpeed,
-              BodyField::LinearVelocity,
-              [](const simcore::SceneBody& b, int axis) -> std::optional<double> { return b.body.linearVelocity[axis]; },
-              [](simcore::SceneBody& b, int axis, double v) { b.body.linearVelocity[axis] = static_cast<float>(v); });
-    addVector(QStringLiteral("angularVelocity"), tr("Spin (rad/s)"), tr("Angular velocity"), -kMaxSpeed, kMaxSpeed,
-              BodyField::AngularVelocity,
-              [](const simcore::SceneBody& b, int axis) -> std::optional<double> { return b.body.angularVelocity[axis]; },
-              [](simcore::SceneBody& b, int axis, double v) { b.body.angularVelocity[axis] = static_cast<float>(v); });
+    m_bodyRows.addVector(QStringLiteral("position"), tr("Position (m)"), tr("Position"), -kMaxCoordinate, kMaxCoordinate,
+                         BodyField::Position,
+                         [](const simcore::SceneBody& b, int axis) -> std::optional<double> { return b.body.position[axis]; },
+                         [](simcore::SceneBody& b, int axis, double v) { b.body.position[axis] = static_cast<float>(v); });
+    m_bodyRows.addVector(QStringLiteral("orientation"), tr("Orientation (°)"), tr("Angle"), -kMaxAngle, kMaxAngle,
+                         BodyField::Orientation,
+                         [](const simcore::SceneBody& b, int axis) -> std::optional<double> {
+                             return eulerDegrees(b.body.orientation)[axis];
+                         },
+                         [](simcore::SceneBody& b, int axis, double v) {
+                             simcore::Vec3 angles = eulerDegrees(b.body.orientation);
+                             angles[axis] = static_cast<float>(v);
+                             b.body.orientation = glm::normalize(simcore::Quat(glm::radians(angles)));
+                         });
+    m_bodyRows.addVector(QStringLiteral("linearVelocity"), tr("Velocity (m/s)"), tr("Velocity"), -kMaxSpeed, kMaxSpeed,
+                         BodyField::LinearVelocity,
+                         [](const simcore::SceneBody& b, int axis) -> std::optional<double> { return b.body.linearVelocity[axis]; },
+                         [](simcore::SceneBody& b, int axis, double v) { b.body.linearVelocity[axis] = static_cast<float>(v); });
+    m_bodyRows.addVector(QStringLiteral("angularVelocity"), tr("Spin (rad/s)"), tr("Angular velocity"), -kMaxSpeed,
+                         kMaxSpeed, BodyField::AngularVelocity,
+                         [](const simcore::SceneBody& b, int axis) -> std::optional<double> { return b.body.angularVelocity[axis]; },
+                         [](simcore::SceneBody& b, int axis, double v) { b.body.angularVelocity[axis] = static_cast<float>(v); });
 
     // Look and collision options.
     m_color->setObjectName(QStringLiteral("color"));
-    addRow(tr("Colour"), m_color, always);
+    m_bodyRows.addRow(tr("Colour"), m_color, always);
     connect(m_color, &QPushButton::clicked, this, &InspectorPanel::chooseColor);
     m_ccd->setObjectName(QStringLiteral("ccd"));
-    addRow(QString(), m_ccd, always);
+    m_bodyRows.addRow(QString(), m_ccd, always);
     connect(m_ccd, &QCheckBox::clicked, this, [this](bool on) {
-        edit(BodyField::Ccd, tr("Continuous Collision"), [on](simcore::SceneBody& b) { b.body.ccd = on; });
+        editBodies(BodyField::Ccd, tr("Continuous Collision"), [on](simcore::SceneBody& b) { b.body.ccd = on; });
     });
-
-    connect(document, &SceneDocument::selectionChanged, this, &InspectorPanel::refresh);
-    connect(document, &SceneDocument::sceneReplaced, this, &InspectorPanel::refresh);
-    connect(document, &SceneDocument::bodyChanged, this, [this](int index) {
-        if (m_document->selectedBodies().contains(index)) refresh();
-    });
-    refresh();
 }
 
-void InspectorPanel::addRow(const QString& label, QWidget* field, std::function<bool(const simcore::SceneBody&)> appliesTo) {
-    m_layout->addRow(label, field);
-    m_rows.push_back({field, std::move(appliesTo)});
-}
+void InspectorPanel::createJointRows() {
+    const auto always = [](const simcore::SceneJoint&) { return true; };
+    // An optional's value as a row value: the row applies while the option is on.
+    const auto hingeLimit = [](float simcore::JointLimits::*bound) {
+        return [bound](const simcore::SceneJoint& j) -> std::optional<double> {
+            if (!isHinge(j) || !j.joint.limits) return std::nullopt;
+            return glm::degrees((*j.joint.limits).*bound);
+        };
+    };
+    const auto sliderLimit = [](float simcore::JointLimits::*bound) {
+        return [bound](const simcore::SceneJoint& j) -> std::optional<double> {
+            if (!isSlider(j) || !j.joint.limits) return std::nullopt;
+            return (*j.joint.limits).*bound;
+        };
+    };
+    const auto motorValue = [](simcore::JointType type, float simcore::JointMotor::*member) {
+        return [type, member](const simcore::SceneJoint& j) -> std::optional<double> {
+            if (j.joint.type != type || !j.joint.motor) return std::nullopt;
+            return (*j.joint.motor).*member;
+        };
+    };
+    const auto setMotor = [](float simcore::JointMotor::*member) {
+        return [member](simcore::SceneJoint& j, double v) { (*j.joint.motor).*member = static_cast<float>(v); };
+    };
+    const auto springValue = [](float simcore::JointSpring::*member) {
+        return [member](const simcore::SceneJoint& j) -> std::optional<double> {
+            if (!isDistance(j) || !j.joint.spring) return std::nullopt;
+            return (*j.joint.spring).*member;
+        };
+    };
+    const auto setSpring = [](float simcore::JointSpring::*member) {
+        return [member](simcore::SceneJoint& j, double v) { (*j.joint.spring).*member = static_cast<float>(v); };
+    };
 
-NumberField* InspectorPanel::addNumber(const QString& key, const QString& quantity, double minimum, double maximum,
-                                       BodyField field, Getter get, Setter set) {
-    auto* number = new NumberField(quantity, minimum, maximum);
-    number->setObjectName(key);
-    m_numbers.push_back({number, get});
-    addRow(quantity, number, [get](const simcore::SceneBody& b) { return get(b).has_value(); });
-    connect(number, &NumberField::rejected, this, &InspectorPanel::showMessage);
-    connect(number, &NumberField::committed, this, [this, field, quantity, get, set](double value) {
-        edit(field, quantity, [&](simcore::SceneBody& b) { set(b, value); },
-             [&](const simcore::SceneBody& b) { return get(b).has_value(); });
+    m_jointName->setObjectName(QStringLiteral("jointName"));
+    m_jointRows.addRow(tr("Name"), m_jointName, always);
+    connect(m_jointName, &QLineEdit::editingFinished, this, [this] {
+        if (m_refreshing || m_document->selectedJoints().size() != 1) return;
+        const QString name = m_jointName->text().trimmed();
+        const int index = m_document->selectedJoints().first();
+        if (name == m_document->jointName(index)) return;
+        if (name.isEmpty()) {
+            m_jointName->setText(m_document->jointName(index));
+            showMessage(tr("A joint needs a name."));
+            return;
+        }
+        editJoints(JointField::Name, QString(), [&](simcore::SceneJoint& j) { j.joint.name = name.toStdString(); });
     });
-    return number;
-}
+    m_jointType->setObjectName(QStringLiteral("jointType"));
+    m_jointRows.addRow(tr("Type"), m_jointType, always);
+    m_jointBodies->setObjectName(QStringLiteral("jointBodies"));
+    // No word wrap: a height-for-width row in a QFormLayout with hidden rows writes out of bounds
+    // in Qt 6.4 (seen under valgrind).
+    m_jointRows.addRow(tr("Joins"), m_jointBodies, always);
 
-void InspectorPanel::addVector(const QString& key, const QString& label, const QString& quantity, double minimum,
-                               double maximum, BodyField field,
-                               std::function<std::optional<double>(const simcore::SceneBody&, int)> get,
-                               std::function<void(simcore::SceneBody&, int, double)> set) {
-    auto* row = new QWidget;
-    auto* layout = new QHBoxLayout(row);
-    layout->setContentsMargins(0, 0, 0, 0);
-    layout->setSpacing(4);
-    static const char* const kAxes[] = {"x", "y", "z"};
-    for (int axis = 0; axis < 3; ++axis) {
-        const QString axisQuantity = QStringLiteral("%1 %2").arg(quantity, QLatin1String(kAxes[axis]));
-        const Getter componentGet = [get, axis](const simcore::SceneBody& b) { return get(b, axis); };
-        auto* number = new NumberField(axisQuantity, minimum, maximum, row);
-        number->setObjectName(key + u'.' + QLatin1String(kAxes[axis]));
-        layout->addWidget(number);
-        m_numbers.push_back({number, componentGet});
-        connect(number, &NumberField::rejected, this, &InspectorPanel::showMessage);
-        connect(number, &NumberField::committed, this, [this, field, quantity, componentGet, set, axis](double value) {
-            edit(field, quantity, [&](simcore::SceneBody& b) { set(b, axis, value); },
-                 [&](const simcore::SceneBody& b) { return componentGet(b).has_value(); });
-        });
-    }
-    addRow(label, row, [get](const simcore::SceneBody& b) { return get(b, 0).has_value(); });
+    // Where it holds, as authored (world frame): the pose of the bodies at Reset is the rest pose.
+    m_jointRows.addVector(QStringLiteral("anchor"), tr("Anchor (m)"), tr("Anchor"), -kMaxCoordinate, kMaxCoordinate,
+                          JointField::Anchor,
+                          [](const simcore::SceneJoint& j, int axis) -> std::optional<double> { return j.joint.anchor[axis]; },
+                          [](simcore::SceneJoint& j, int axis, double v) { j.joint.anchor[axis] = static_cast<float>(v); });
+    m_jointRows.addVector(QStringLiteral("anchorB"), tr("Anchor on B (m)"), tr("Anchor on B"), -kMaxCoordinate,
+                          kMaxCoordinate, JointField::AnchorB,
+                          [](const simcore::SceneJoint& j, int axis) -> std::optional<double> {
+                              if (!isDistance(j)) return std::nullopt;
+                              return j.joint.anchorB[axis];
+                          },
+                          [](simcore::SceneJoint& j, int axis, double v) { j.joint.anchorB[axis] = static_cast<float>(v); });
+    m_jointRows.addVector(QStringLiteral("axis"), tr("Axis"), tr("Axis"), -kMaxCoordinate, kMaxCoordinate, JointField::Axis,
+                          [](const simcore::SceneJoint& j, int axis) -> std::optional<double> {
+                              if (!isHingeOrSlider(j)) return std::nullopt;
+                              return j.joint.axis[axis];
+                          },
+                          [](simcore::SceneJoint& j, int axis, double v) { j.joint.axis[axis] = static_cast<float>(v); });
+
+    // Limits: hinge angles in degrees (stored in radians), slider travel in metres.
+    m_limits->setObjectName(QStringLiteral("limits"));
+    m_jointRows.addRow(QString(), m_limits, isHingeOrSlider);
+    connect(m_limits, &QCheckBox::clicked, this, [this](bool on) {
+        editJoints(JointField::Limits, tr("Limits"), [on](simcore::SceneJoint& j) {
+            if (!on) {
+                j.joint.limits.reset();
+            } else if (!j.joint.limits) {
+                const float range = isHinge(j) ? kDefaultHingeLimit : kDefaultSliderLimit;
+                j.joint.limits = simcore::JointLimits{-range, range};
+            }
+        }, isHingeOrSlider);
+    });
+    m_jointRows.addNumber(QStringLiteral("hingeLower"), tr("Lower angle (°)"), -kMaxHingeAngle, kMaxHingeAngle,
+                          JointField::Limits, hingeLimit(&simcore::JointLimits::lower),
+                          [](simcore::SceneJoint& j, double v) { j.joint.limits->lower = glm::radians(static_cast<float>(v)); },
+                          tr("Lower Angle"));
+    m_jointRows.addNumber(QStringLiteral("hingeUpper"), tr("Upper angle (°)"), -kMaxHingeAngle, kMaxHingeAngle,
+                          JointField::Limits, hingeLimit(&simcore::JointLimits::upper),
+                          [](simcore::SceneJoint& j, double v) { j.joint.limits->upper = glm::radians(static_cast<float>(v)); },
+                          tr("Upper Angle"));
+    m_jointRows.addNumber(QStringLiteral("sliderLower"), tr("Lower limit (m)"), -kMaxCoordinate, kMaxCoordinate,
+                          JointField::Limits, sliderLimit(&simcore::JointLimits::lower),
+                          [](simcore::SceneJoint& j, double v) { j.joint.limits->lower = static_cast<float>(v); },
+                          tr("Lower Limit"));
+    m_jointRows.addNumber(QStringLiteral("sliderUpper"), tr("Upper limit (m)"), -kMaxCoordinate, kMaxCoordinate,
+                          JointField::Limits, sliderLimit(&simcore::JointLimits::upper),
+                          [](simcore::SceneJoint& j, double v) { j.joint.limits->upper = static_cast<float>(v); },
+                          tr("Upper Limit"));
+
+    // Motor.
+    m_motor->setObjectName(QStringLiteral("motor"));
+    m_jointRows.addRow(QString(), m_motor, isHingeOrSlider);
+    connect(m_motor, &QCheckBox::clicked, this, [this](bool on) {
+        editJoints(JointField::Motor, tr("Motor"), [on](simcore::SceneJoint& j) {
+            if (!on) j.joint.motor.reset();
+            else if (!j.joint.motor) j.joint.motor = kDefaultMotor;
+        }, isHingeOrSlider);
+    });
+    m_jointRows.addNumber(QStringLiteral("hingeMotorSpeed"), tr("Motor speed (rad/s)"), -kMaxSpeed, kMaxSpeed,
+                          JointField::Motor, motorValue(simcore::JointType::Hinge, &simcore::JointMotor::speed),
+                          setMotor(&simcore::JointMotor::speed),
+                          tr("Hinge Motor Speed"));
+    m_jointRows.addNumber(QStringLiteral("hingeMaxTorque"), tr("Max torque (N m)"), 0.0, kMaxMotorForce, JointField::Motor,
+                          motorValue(simcore::JointType::Hinge, &simcore::JointMotor::maxForce),
+                          setMotor(&simcore::JointMotor::maxForce),
+                          tr("Hinge Motor Torque"));
+    m_jointRows.addNumber(QStringLiteral("sliderMotorSpeed"), tr("Motor speed (m/s)"), -kMaxSpeed, kMaxSpeed,
+                          JointField::Motor, motorValue(simcore::JointType::Slider, &simcore::JointMotor::speed),
+                          setMotor(&simcore::JointMotor::speed),
+                          tr("Slider Motor Speed"));
+    m_jointRows.addNumber(QStringLiteral("sliderMaxForce"), tr("Max force (N)"), 0.0, kMaxMotorForce, JointField::Motor,
+                          motorValue(simcore::JointType::Slider, &simcore::JointMotor::maxForce),
+                          setMotor(&simcore::JointMotor::maxForce),
+                          tr("Slider Motor Force"));
+
+    // Distance: a length range (off: the rest length, or unbounded with a spring) and a spring.
+    m_lengths->setObjectName(QStringLiteral("lengths"));
+    m_jointRows.addRow(QString(), m_lengths, isDistance);
+    connect(m_lengths, &QCheckBox::clicked, this, [this](bool on) {
+        editJoints(JointField::Lengths, tr("Length Range"), [on](simcore::SceneJoint& j) {
+            if (!on) {
+                j.joint.minLength.reset();
+                j.joint.maxLength.reset();
+            } else if (!hasLengthRange(j)) {
+                // Start from the lengths in effect; an unbounded maximum starts a metre beyond rest.
+                const simcore::DistanceLengths lengths = simcore::distanceLengths(j.joint);
+                j.joint.minLength = lengths.min;
+                j.joint.maxLength = std::isfinite(lengths.max) ? lengths.max : lengths.rest + 1.0f;
+            }
+        }, isDistance);
+    });
+    m_jointRows.addNumber(QStringLiteral("minLength"), tr("Min length (m)"), 0.0, kMaxLength, JointField::Lengths,
+                          [](const simcore::SceneJoint& j) -> std::optional<double> {
+                              if (!hasLengthRange(j)) return std::nullopt;
+                              return simcore::distanceLengths(j.joint).min;
+                          },
+                          [](simcore::SceneJoint& j, double v) { j.joint.minLength = static_cast<float>(v); },
+                          tr("Minimum Length"));
+    m_jointRows.addNumber(QStringLiteral("maxLength"), tr("Max length (m)"), 0.0, kMaxLength, JointField::Lengths,
+                          [](const simcore::SceneJoint& j) -> std::optional<double> {
+                              if (!hasLengthRange(j)) return std::nullopt;
+                              return simcore::distanceLengths(j.joint).max;
+                          },
+                          [](simcore::SceneJoint& j, double v) { j.joint.maxLength = static_cast<float>(v); },
+                          tr("Maximum Length"));
+    m_spring->setObjectName(QStringLiteral("spring"));
+    m_jointRows.addRow(QString(), m_spring, isDistance);
+    connect(m_spring, &QCheckBox::clicked, this, [this](bool on) {
+        editJoints(JointField::Spring, tr("Spring"), [on](simcore::SceneJoint& j) {
+            if (!on) j.joint.spring.reset();
+            else if (!j.joint.spring) j.joint.spring = simcore::JointSpring{};
+        }, isDistance);
+    });
+    m_jointRows.addNumber(QStringLiteral("springHertz"), tr("Spring frequency (Hz)"), kMinSpringHertz, kMaxSpringHertz,
+                          JointField::Spring, springValue(&simcore::JointSpring::hertz),
+                          setSpring(&simcore::JointSpring::hertz),
+                          tr("Spring Frequency"));
+    m_jointRows.addNumber(QStringLiteral("springDampingRatio"), tr("Spring damping ratio"), 0.0, kMaxDampingRatio,
+                          JointField::Spring, springValue(&simcore::JointSpring::dampingRatio),
+                          setSpring(&simcore::JointSpring::dampingRatio),
+                          tr("Spring Damping"));
+
+    m_collideConnected->setObjectName(QStringLiteral("collideConnected"));
+    m_jointRows.addRow(QString(), m_collideConnected, [](const simcore::SceneJoint& j) { return j.bodyB.has_value(); });
+    connect(m_collideConnected, &QCheckBox::clicked, this, [this](bool on) {
+        editJoints(JointField::CollideConnected, tr("Collision"),
+                   [on](simcore::SceneJoint& j) { j.joint.collideConnected = on; },
+                   [](const simcore::SceneJoint& j) { return j.bodyB.has_value(); });
+    });
 }
 
 NumberField* InspectorPanel::numberField(const QString& key) const {
-    for (const NumberRow& row : m_numbers) {
-        if (row.field->objectName() == key) return row.field;
-    }
-    return nullptr;
+    if (NumberField* field = m_bodyRows.numberField(key)) return field;
+    return m_jointRows.numberField(key);
 }
 
 QString InspectorPanel::message() const {
     return m_message->isHidden() ? QString() : m_message->text();
 }
 
-void InspectorPanel::edit(BodyField field, const QString& what, const std::function<void(simcore::SceneBody&)>& change,
-                          const std::function<bool(const simcore::SceneBody&)>& appliesTo) {
+namespace {
+
+// The text of an edit's command: "Move Box 1", "Change Friction of 3 Bodies", "Rename Joint 2 to Door".
+QString commandText(BodyField field, const QString& what, const QString& objects, const QString& newName) {
+    switch (field) {
+    case BodyField::Position: return InspectorPanel::tr("Move %1").arg(objects);
+    case BodyField::Orientation: return InspectorPanel::tr("Rotate %1").arg(objects);
+    case BodyField::Name: return InspectorPanel::tr("Rename %1 to %2").arg(objects, newName);
+    default: return InspectorPanel::tr("Change %1 of %2").arg(what, objects);
+    }
+}
+
+QString commandText(JointField field, const QString& what, const QString& objects, const QString& newName) {
+    if (field == JointField::Name) return InspectorPanel::tr("Rename %1 to %2").arg(objects, newName);
+    return InspectorPanel::tr("Change %1 of %2").arg(what, objects);
+}
+
+}  // namespace
+
+template <typename Object, typename Field>
+void InspectorPanel::edit(Field field, const QString& what, const std::function<void(Object&)>& change,
+                          const std::function<bool(const Object&)>& appliesTo) {
     if (m_refreshing) return;
+    constexpr bool kBodies = std::is_same_v<Object, simcore::SceneBody>;
+    const QList<int>& selection = kBodies ? m_document->selectedBodies() : m_document->selectedJoints();
     QList<int> indices;
-    std::vector<simcore::SceneBody> after;
-    for (int index : m_document->selectedBodies()) {
-        const simcore::SceneBody& body = m_document->body(index);
-        if (appliesTo && !appliesTo(body)) continue;
-        simcore::SceneBody changed = body;
+    std::vector<Object> after;
+    for (int index : selection) {
+        const Object& object = ObjectAccess<Object>::get(*m_document, index);
+        if (appliesTo && !appliesTo(object)) continue;
+        Object changed = object;
         change(changed);
-        // The engine's own checks catch what a single field cannot (e.g. a hull that is missing).
-        try {
-            simcore::World probe;
-            probe.createBody(changed.body);
-        } catch (const std::exception& e) {
-            showMessage(tr("%1 not changed: %2").arg(m_document->bodyName(index), QString::fromStdString(e.what())));
+        // The engine's own checks catch what a single field cannot (a hull that is missing, limits
+        // the wrong way round).
+        QString problem;
+        if constexpr (kBodies) {
+            try {
+                simcore::World probe;
+                probe.createBody(changed.body);
+            } catch (const std::exception& e) {
+                problem = QString::fromStdString(e.what());
+            }
+        } else {
+            problem = m_document->jointProblem(changed);
+        }
+        if (!problem.isEmpty()) {
+            const QString name = kBodies ? m_document->bodyName(index) : m_document->jointName(index);
+            showMessage(tr("%1 not changed: %2").arg(name, problem));
             refresh();
             return;
         }
@@ -314,18 +551,27 @@ void InspectorPanel::edit(BodyField field, const QString& what, const std::funct
         after.push_back(std::move(changed));
     }
     if (indices.isEmpty()) return;
-    const QString bodies = bodiesLabel(*m_document, indices);
-    QString text;
-    switch (field) {
-    case BodyField::Position: text = tr("Move %1").arg(bodies); break;
-    case BodyField::Orientation: text = tr("Rotate %1").arg(bodies); break;
-    case BodyField::Name:
-        text = tr("Rename %1 to %2").arg(bodies, QString::fromStdString(after.front().body.name));
-        break;
-    default: text = tr("Change %1 of %2").arg(what, bodies); break;
+    QString label, newName;
+    if constexpr (kBodies) {
+        label = bodiesLabel(*m_document, indices);
+        newName = QString::fromStdString(after.front().body.name);
+    } else {
+        label = jointsLabel(*m_document, indices);
+        newName = QString::fromStdString(after.front().joint.name);
     }
     m_message->hide();
-    m_document->undoStack()->push(new ChangeBodies(m_document, text, field, indices, std::move(after)));
+    m_document->undoStack()->push(new ChangeObjects<Object>(m_document, commandText(field, what, label, newName), field,
+                                                            indices, std::move(after)));
+}
+
+void InspectorPanel::editBodies(BodyField field, const QString& what, const std::function<void(simcore::SceneBody&)>& change,
+                                const std::function<bool(const simcore::SceneBody&)>& appliesTo) {
+    edit<simcore::SceneBody>(field, what, change, appliesTo);
+}
+
+void InspectorPanel::editJoints(JointField field, const QString& what, const std::function<void(simcore::SceneJoint&)>& change,
+                                const std::function<bool(const simcore::SceneJoint&)>& appliesTo) {
+    edit<simcore::SceneJoint>(field, what, change, appliesTo);
 }
 
 void InspectorPanel::showMessage(const QString& message) {
@@ -344,69 +590,83 @@ void InspectorPanel::chooseColor() {
     const simcore::Vec3 linear(linearFromSrgb(static_cast<float>(chosen.redF())),
                                linearFromSrgb(static_cast<float>(chosen.greenF())),
                                linearFromSrgb(static_cast<float>(chosen.blueF())));
-    edit(BodyField::Color, tr("Colour"), [&](simcore::SceneBody& b) { b.color = linear; });
+    editBodies(BodyField::Color, tr("Colour"), [&](simcore::SceneBody& b) { b.color = linear; });
 }
 
 void InspectorPanel::refresh() {
     m_refreshing = true;
+    const QList<int>& bodies = m_document->selectedBodies();
+    const QList<int>& joints = m_document->selectedJoints();
+    // Bodies win a mixed selection; joints have their own form when they are all that is selected.
+    const bool showJoints = bodies.isEmpty() && !joints.isEmpty();
+    if (bodies.isEmpty() && joints.isEmpty()) {
+        m_header->setText(tr("Nothing selected. Click a body in the viewport, or pick a body or joint in the Scene tree."));
+    } else if (showJoints) {
+        m_header->setText(joints.size() == 1 ? m_document->jointName(joints.first())
+                                             : tr("%1 joints selected").arg(joints.size()));
+    } else {
+        m_header->setText(bodies.size() == 1 ? m_document->bodyName(bodies.first()) : tr("%1 bodies selected").arg(bodies.size()));
+    }
+    m_bodyForm->setVisible(!bodies.isEmpty());
+    m_jointForm->setVisible(showJoints);
+    if (!bodies.isEmpty()) refreshBodies();
+    if (showJoints) refreshJoints();
+    m_refreshing = false;
+}
+
+void InspectorPanel::refreshBodies() {
     const QList<int>& selection = m_document->selectedBodies();
     std::vector<const simcore::SceneBody*> bodies;
     for (int index : selection) bodies.push_back(&m_document->body(index));
+    m_bodyRows.refresh(bodies);
 
-    if (bodies.empty()) {
-        m_header->setText(tr("Nothing selected. Click a body in the viewport or pick one in the Scene tree."));
-    } else if (bodies.size() == 1) {
-        m_header->setText(m_document->bodyName(selection.first()));
+    const simcore::SceneBody& lead = *bodies.front();
+    m_name->setEnabled(bodies.size() == 1);
+    m_name->setText(bodies.size() == 1 ? m_document->bodyName(selection.first()) : QString());
+    m_shapeType->setCurrentIndex(m_shapeType->findData(static_cast<int>(lead.body.shape.type)));
+    m_motion->setCurrentIndex(m_motion->findData(static_cast<int>(lead.body.motion)));
+    m_massMode->setCurrentIndex(lead.body.mass ? 0 : 1);
+    // The field takes what a scene file accepts for what it holds (README "Scene format").
+    if (lead.body.mass) numberField(QStringLiteral("mass"))->setRange(kMinMass, kMaxMass);
+    else numberField(QStringLiteral("mass"))->setRange(kMinDensity, kMaxDensity);
+    if (lead.body.shape.hull) {
+        m_hullInfo->setText(tr("%1 points, %2 faces")
+                                .arg(lead.body.shape.hull->sourcePoints().size())
+                                .arg(lead.body.shape.hull->faces().size()));
+    }
+    if (lead.color) {
+        const QColor c = toQColor(*lead.color);
+        m_color->setText(c.name());
+        m_color->setStyleSheet(QStringLiteral("background-color: %1; color: %2;")
+                                   .arg(c.name(), c.lightnessF() > 0.55 ? QStringLiteral("black") : QStringLiteral("white")));
     } else {
-        m_header->setText(tr("%1 bodies selected").arg(bodies.size()));
+        m_color->setText(tr("Automatic"));
+        m_color->setStyleSheet(QString());
     }
-    m_form->setVisible(!bodies.empty());
+    m_ccd->setChecked(lead.body.ccd);
+}
 
-    for (const FormRow& row : m_rows) {
-        const bool applies = std::any_of(bodies.begin(), bodies.end(), [&](const auto* b) { return row.appliesTo(*b); });
-        m_layout->setRowVisible(row.field, applies);
-    }
-    for (const NumberRow& row : m_numbers) {
-        std::optional<double> shown;
-        bool first = true, same = true;
-        for (const simcore::SceneBody* b : bodies) {
-            const std::optional<double> value = row.get(*b);
-            if (!value) continue;
-            if (first) shown = value;
-            else if (*value != *shown) same = false;
-            first = false;
-        }
-        row.field->setValue(same ? shown : std::nullopt);
-    }
+void InspectorPanel::refreshJoints() {
+    const QList<int>& selection = m_document->selectedJoints();
+    std::vector<const simcore::SceneJoint*> joints;
+    for (int index : selection) joints.push_back(&m_document->joint(index));
+    m_jointRows.refresh(joints);
 
-    if (!bodies.empty()) {
-        const simcore::SceneBody& lead = *bodies.front();
-        m_name->setEnabled(bodies.size() == 1);
-        m_name->setText(bodies.size() == 1 ? m_document->bodyName(selection.first()) : QString());
-        m_shapeType->setCurrentIndex(m_shapeType->findData(static_cast<int>(lead.body.shape.type)));
-        m_motion->setCurrentIndex(m_motion->findData(static_cast<int>(lead.body.motion)));
-        m_massMode->setCurrentIndex(lead.body.mass ? 0 : 1);
-        // The field takes what a scene file accepts for what it holds (README "Scene format").
-        if (lead.body.mass) numberField(QStringLiteral("mass"))->setRange(kMinMass, kMaxMass);
-        else numberField(QStringLiteral("mass"))->setRange(kMinDensity, kMaxDensity);
-        if (lead.body.shape.hull) {
-            m_hullInfo->setText(tr("%1 points, %2 faces")
-                                    .arg(lead.body.shape.hull->sourcePoints().size())
-                                    .arg(lead.body.shape.hull->faces().size()));
-        }
-        if (lead.color) {
-            const QColor c = toQColor(*lead.color);
-            m_color->setText(c.name());
-            m_color->setStyleSheet(QStringLiteral("background-color: %1; color: %2;")
-                                       .arg(c.name(), c.lightnessF() > 0.55 ? QStringLiteral("black")
-                                                                            : QStringLiteral("white")));
-        } else {
-            m_color->setText(tr("Automatic"));
-            m_color->setStyleSheet(QString());
-        }
-        m_ccd->setChecked(lead.body.ccd);
-    }
-    m_refreshing = false;
+    const simcore::SceneJoint& lead = *joints.front();
+    const bool one = joints.size() == 1;
+    m_jointName->setEnabled(one);
+    m_jointName->setText(one ? m_document->jointName(selection.first()) : QString());
+    const bool sameType = std::all_of(joints.begin(), joints.end(), [&](const auto* j) { return j->joint.type == lead.joint.type; });
+    m_jointType->setText(sameType ? jointTypeDisplayName(lead.joint.type) : tr("mixed"));
+    m_jointBodies->setText(one ? tr("%1 and %2").arg(m_document->bodyName(static_cast<int>(lead.bodyA)),
+                                                     lead.bodyB ? m_document->bodyName(static_cast<int>(*lead.bodyB))
+                                                                : tr("the world"))
+                               : tr("%1 pairs").arg(joints.size()));
+    m_limits->setChecked(lead.joint.limits.has_value());
+    m_motor->setChecked(lead.joint.motor.has_value());
+    m_lengths->setChecked(hasLengthRange(lead));
+    m_spring->setChecked(lead.joint.spring.has_value());
+    m_collideConnected->setChecked(lead.joint.collideConnected);
 }
 
 }  // namespace interplay

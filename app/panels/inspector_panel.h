@@ -1,20 +1,20 @@
 #pragma once
-// The Inspector dock: the selected bodies' properties. Each row is a getter/setter pair (as in
-// Tiled's properties widget): the getter reads a value from a body (or says the row does not
-// apply to it, e.g. a radius for a box), the setter changes a copy, and the edit is pushed as one
-// ChangeBodies command for every selected body the row applies to. With several bodies selected a
-// row whose values differ shows "mixed"; typing a value sets it on all of them.
+// The Inspector dock: the selected bodies' properties or, when only joints are selected, the
+// selected joints'. Each form is a set of PropertyRows (getter/setter pairs, as in Tiled's
+// properties widget), and an edit is pushed as one ChangeBodies or ChangeJoints command for every
+// selected object the row applies to. With several objects selected a row whose values differ
+// shows "mixed"; typing a value sets it on all of them.
 //
-// Bad input (not a number, NaN, a size <= 0, a negative mass, restitution above 1, anything the
-// engine refuses) pushes nothing: the message says why, and the field shows the old value again.
+// Bad input (not a number, NaN, a size <= 0, a negative mass, restitution above 1, a zero axis,
+// limits the wrong way round, anything the engine refuses) pushes nothing: the message says why,
+// and the field shows the old value again.
 
 #include "app/document/scene_document.h"
+#include "app/panels/property_rows.h"
 
 #include <QWidget>
 
 #include <functional>
-#include <optional>
-#include <vector>
 
 class QCheckBox;
 class QComboBox;
@@ -33,13 +33,22 @@ class InspectorPanel : public QWidget {
 public:
     explicit InspectorPanel(SceneDocument* document, QWidget* parent = nullptr);
 
-    // Fields by key, e.g. "friction", "position.x", "halfExtents.y", "radius", "mass" (for tests
-    // and for focusing from elsewhere).
+    // Fields by key (for tests and for focusing from elsewhere). Bodies: "friction", "position.x",
+    // "halfExtents.y", "radius", "mass", ... Joints: "anchor.x", "anchorB.x", "axis.x",
+    // "hingeLower", "hingeUpper" (degrees), "sliderLower", "sliderUpper", "hingeMotorSpeed",
+    // "hingeMaxTorque", "sliderMotorSpeed", "sliderMaxForce", "minLength", "maxLength",
+    // "springHertz", "springDampingRatio".
     NumberField* numberField(const QString& key) const;
     QLineEdit* nameField() const { return m_name; }
     QComboBox* shapeTypeBox() const { return m_shapeType; }
     QComboBox* motionBox() const { return m_motion; }
     QCheckBox* ccdBox() const { return m_ccd; }
+    QLineEdit* jointNameField() const { return m_jointName; }
+    QCheckBox* limitsBox() const { return m_limits; }
+    QCheckBox* motorBox() const { return m_motor; }
+    QCheckBox* lengthsBox() const { return m_lengths; }
+    QCheckBox* springBox() const { return m_spring; }
+    QCheckBox* collideConnectedBox() const { return m_collideConnected; }
     // The last rejection message shown (empty once a valid edit went through).
     QString message() const;
 
@@ -47,38 +56,34 @@ signals:
     void rejected(const QString& message);
 
 private:
-    using Getter = std::function<std::optional<double>(const simcore::SceneBody&)>;
-    using Setter = std::function<void(simcore::SceneBody&, double)>;
-    struct NumberRow {
-        NumberField* field;
-        Getter get;
-    };
-    struct FormRow {
-        QWidget* field;
-        std::function<bool(const simcore::SceneBody&)> appliesTo;
-    };
+    using BodyRows = PropertyRows<simcore::SceneBody, BodyField>;
+    using JointRows = PropertyRows<simcore::SceneJoint, JointField>;
 
-    NumberField* addNumber(const QString& key, const QString& quantity, double minimum, double maximum, BodyField field,
-                           Getter get, Setter set);
-    // A row of three fields for a vector; `component(body, axis)` reads, `setComponent` writes.
-    void addVector(const QString& key, const QString& label, const QString& quantity, double minimum, double maximum,
-                   BodyField field, std::function<std::optional<double>(const simcore::SceneBody&, int)> get,
-                   std::function<void(simcore::SceneBody&, int, double)> set);
-    void addRow(const QString& label, QWidget* field, std::function<bool(const simcore::SceneBody&)> appliesTo);
-
-    // Applies `change` to a copy of every selected body for which `appliesTo` holds and pushes
-    // the result, or shows why the engine refuses it.
-    void edit(BodyField field, const QString& what, const std::function<void(simcore::SceneBody&)>& change,
-              const std::function<bool(const simcore::SceneBody&)>& appliesTo = {});
+    void createBodyRows();
+    void createJointRows();
+    // Applies `change` to a copy of every selected body (joint) for which `appliesTo` holds and
+    // pushes the result, or shows why the engine refuses it.
+    template <typename Object, typename Field>
+    void edit(Field field, const QString& what, const std::function<void(Object&)>& change,
+              const std::function<bool(const Object&)>& appliesTo);
+    void editBodies(BodyField field, const QString& what, const std::function<void(simcore::SceneBody&)>& change,
+                    const std::function<bool(const simcore::SceneBody&)>& appliesTo = {});
+    void editJoints(JointField field, const QString& what, const std::function<void(simcore::SceneJoint&)>& change,
+                    const std::function<bool(const simcore::SceneJoint&)>& appliesTo = {});
     void refresh();
+    void refreshBodies();
+    void refreshJoints();
     void showMessage(const QString& message);
     void chooseColor();
 
     SceneDocument* m_document;
     QLabel* m_header;
     QLabel* m_message;
-    QWidget* m_form;
-    QFormLayout* m_layout;
+    QWidget* m_bodyForm;
+    QWidget* m_jointForm;
+    BodyRows m_bodyRows;
+    JointRows m_jointRows;
+
     QLineEdit* m_name;
     QComboBox* m_shapeType;
     QLabel* m_hullInfo;
@@ -86,8 +91,16 @@ private:
     QComboBox* m_massMode;
     QPushButton* m_color;
     QCheckBox* m_ccd;
-    std::vector<NumberRow> m_numbers;
-    std::vector<FormRow> m_rows;
+
+    QLineEdit* m_jointName;
+    QLabel* m_jointType;
+    QLabel* m_jointBodies;
+    QCheckBox* m_limits;
+    QCheckBox* m_motor;
+    QCheckBox* m_lengths;
+    QCheckBox* m_spring;
+    QCheckBox* m_collideConnected;
+
     bool m_refreshing = false;
 };
 

@@ -28,7 +28,8 @@ void NumberField::setValue(std::optional<double> value) {
 
 QString NumberField::display() const {
     // Scene files use '.' whatever the locale; so do the fields. Six digits hide float noise (29.99999).
-    return m_value ? QLocale::c().toString(*m_value, 'g', 6) : QString();
+    // + 0.0 shows a negative zero (a computed axis, say) as "0".
+    return m_value ? QLocale::c().toString(*m_value + 0.0, 'g', 6) : QString();
 }
 
 std::variant<double, QString> NumberField::parse(const QString& text) const {

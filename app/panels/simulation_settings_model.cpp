@@ -42,6 +42,12 @@ QStringList SimulationSettingsModel::positionCorrectionNames() const {
     return {tr("Soft step"), tr("Baumgarte")};
 }
 
+int SimulationSettingsModel::integrator() const { return static_cast<int>(settings().integrator); }
+
+QStringList SimulationSettingsModel::integratorNames() const {  // in simcore::Integrator's order
+    return {tr("Semi-implicit Euler"), tr("Explicit Euler"), tr("Velocity Verlet")};
+}
+
 QStringList SimulationSettingsModel::effectNames() const {
     QStringList names;
     for (int i = 0; i < simcore::kEffectCount; ++i) {
@@ -109,6 +115,13 @@ void SimulationSettingsModel::setPositionCorrection(int method) {
     simcore::WorldSettings after = settings();
     after.solver.positionCorrection = static_cast<simcore::PositionCorrection>(method);
     push(tr("Position Correction"), QStringLiteral("solver.positionCorrection"), after);
+}
+
+void SimulationSettingsModel::setIntegrator(int method) {
+    if (method < 0 || method > static_cast<int>(simcore::Integrator::VelocityVerlet)) return;
+    simcore::WorldSettings after = settings();
+    after.integrator = static_cast<simcore::Integrator>(method);
+    push(tr("Integrator"), QStringLiteral("integrator"), after);
 }
 
 void SimulationSettingsModel::setLinearDamping(double rate) {

@@ -28,6 +28,8 @@ class SimulationSettingsModel : public QObject {
     Q_PROPERTY(int positionIterations READ positionIterations WRITE setPositionIterations NOTIFY changed)
     Q_PROPERTY(int positionCorrection READ positionCorrection WRITE setPositionCorrection NOTIFY changed)
     Q_PROPERTY(QStringList positionCorrectionNames READ positionCorrectionNames CONSTANT)
+    Q_PROPERTY(int integrator READ integrator WRITE setIntegrator NOTIFY changed)
+    Q_PROPERTY(QStringList integratorNames READ integratorNames CONSTANT)
     Q_PROPERTY(double linearDamping READ linearDamping WRITE setLinearDamping NOTIFY changed)
     Q_PROPERTY(double angularDamping READ angularDamping WRITE setAngularDamping NOTIFY changed)
     Q_PROPERTY(QStringList effectNames READ effectNames CONSTANT)
@@ -48,6 +50,8 @@ public:
     int positionIterations() const;
     int positionCorrection() const;
     QStringList positionCorrectionNames() const;
+    int integrator() const;
+    QStringList integratorNames() const;
     double linearDamping() const;
     double angularDamping() const;
     QStringList effectNames() const;
@@ -63,6 +67,7 @@ public:
     void setVelocityIterations(int iterations);
     void setPositionIterations(int iterations);
     void setPositionCorrection(int method);
+    void setIntegrator(int method);
     void setLinearDamping(double rate);
     void setAngularDamping(double rate);
     void setPreset(int preset);

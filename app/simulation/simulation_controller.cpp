@@ -1,8 +1,14 @@
 #include "app/simulation/simulation_controller.h"
 
+#include "app/document/scene_edits.h"
+
+#include <glm/gtc/quaternion.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <stdexcept>
+#include <utility>
 
 namespace interplay {
 namespace {
@@ -37,6 +43,12 @@ int SimulationController::sceneIndexOf(simcore::BodyId id) const {
 }
 
 bool SimulationController::setScene(const simcore::Scene& scene, QString* error) {
+    if (!build(scene, error)) return false;
+    pause();
+    return true;
+}
+
+bool SimulationController::build(simcore::Scene scene, QString* error) {
     std::unique_ptr<simcore::BuiltWorld> built;
     try {
         // new T(prvalue) constructs in place, so this does not require World to be movable.
@@ -45,17 +57,201 @@ bool SimulationController::setScene(const simcore::Scene& scene, QString* error)
         if (error) *error = QString::fromStdString(e.what());
         return false;
     }
-    pause();
-    m_scene = scene;
+    m_scene = std::move(scene);
     m_built = std::move(built);
     m_bodyIds = m_built->bodyIds;
+    m_jointIds = m_built->jointIds;
     m_colors.clear();
-    m_colors.reserve(scene.bodies.size());
-    for (const simcore::SceneBody& body : scene.bodies) m_colors.push_back(body.color);
+    m_colors.reserve(m_scene.bodies.size());
+    for (const simcore::SceneBody& body : m_scene.bodies) m_colors.push_back(body.color);
     m_grab.reset();
     m_history.clear();
+    m_rebuildBeforeRun = false;
     emit worldRebuilt();
     return true;
+}
+
+void SimulationController::editedInPlace() {
+    // Edits in place leave the world as the edits made it: bodies in another order, a broad-phase
+    // tree of another shape. Once it has run nothing is lost by keeping it; before, a fresh build
+    // makes the run the same as the saved scene's.
+    if (m_built->world.stepCount() == 0 && m_bodyIds.size() == m_scene.bodies.size()) m_rebuildBeforeRun = true;
+}
+
+void SimulationController::rebuildIfEditedBeforeRun() {
+    if (!m_rebuildBeforeRun) return;
+    QString error;
+    if (!build(m_scene, &error)) emit simulationError(error);
+}
+
+// ---- Edits of the authored scene ------------------------------------------------------------------
+
+bool SimulationController::insertBody(int index, const simcore::SceneBody& body, QString* error) {
+    if (!m_built) return false;
+    insertSceneBody(m_scene, index, body);
+    simcore::BodyId id;  // stays invalid if the engine refuses the body, so indices stay aligned
+    bool created = true;
+    try {
+        id = m_built->world.createBody(body.body);
+    } catch (const std::exception& e) {
+        if (error) *error = QString::fromStdString(e.what());
+        created = false;
+    }
+    m_bodyIds.insert(m_bodyIds.begin() + index, id);
+    m_colors.insert(m_colors.begin() + index, body.color);
+    editedInPlace();
+    emit bodiesEdited();
+    return created;
+}
+
+void SimulationController::removeBody(int index) {
+    if (!m_built) return;
+    const simcore::BodyId id = m_bodyIds.at(static_cast<std::size_t>(index));
+    if (m_built->world.contains(id)) m_built->world.destroyBody(id);
+    if (m_grab && m_grab->body == id) m_grab.reset();
+    m_bodyIds.erase(m_bodyIds.begin() + index);
+    m_colors.erase(m_colors.begin() + index);
+    takeSceneBody(m_scene, index);
+    editedInPlace();
+    emit bodiesEdited();
+}
+
+void SimulationController::moveBody(int from, int to) {
+    if (!m_built) return;
+    moveSceneBody(m_scene, from, to);
+    moveItem(m_bodyIds, from, to);
+    moveItem(m_colors, from, to);
+    editedInPlace();  // a fresh build would create the bodies in the new order
+    emit bodiesEdited();
+}
+
+bool SimulationController::changeBody(int index, const simcore::SceneBody& body, BodyField field, QString* error) {
+    if (!m_built) return false;
+    const simcore::SceneBody before = std::exchange(m_scene.bodies.at(static_cast<std::size_t>(index)), body);
+    simcore::World& world = m_built->world;
+    const simcore::BodyId id = m_bodyIds[static_cast<std::size_t>(index)];
+    if (field == BodyField::Color) {
+        m_colors[static_cast<std::size_t>(index)] = body.color;
+        emit bodiesEdited();
+        return true;
+    }
+    try {
+        if (!world.contains(id)) throw std::invalid_argument("the body is not in the running world");
+        const simcore::BodyCreationSettings& b = body.body;
+        switch (field) {
+        case BodyField::Position:
+            world.setTransform(id, world.position(id) + (b.position - before.body.position), world.orientation(id));
+            break;
+        case BodyField::Orientation:
+            world.setTransform(id, world.position(id),
+                               b.orientation * glm::inverse(before.body.orientation) * world.orientation(id));
+            break;
+        case BodyField::Pose:
+            world.setTransform(id, b.position, b.orientation);
+            world.setLinearVelocity(id, b.linearVelocity);
+            world.setAngularVelocity(id, b.angularVelocity);
+            break;
+        case BodyField::LinearVelocity: world.setLinearVelocity(id, b.linearVelocity); break;
+        case BodyField::AngularVelocity: world.setAngularVelocity(id, b.angularVelocity); break;
+        default:
+            recreateBody(index);
+            editedInPlace();
+            emit bodiesEdited();
+            return true;
+        }
+    } catch (const std::exception& e) {
+        if (error) *error = QString::fromStdString(e.what());
+        return false;
+    }
+    editedInPlace();
+    emit posesEdited();
+    return true;
+}
+
+void SimulationController::recreateBody(int index) {
+    simcore::World& world = m_built->world;
+    const auto i = static_cast<std::size_t>(index);
+    const simcore::BodyId old = m_bodyIds[i];
+    simcore::BodyCreationSettings settings = m_scene.bodies[i].body;
+    settings.position = world.position(old);
+    settings.orientation = world.orientation(old);
+    if (settings.motion != simcore::MotionType::Static) {
+        settings.linearVelocity = world.linearVelocity(old);
+        settings.angularVelocity = world.angularVelocity(old);
+    }
+    const simcore::BodyId id = world.createBody(settings);  // throws before anything changed
+    world.destroyBody(old);                                 // and its joints
+    m_bodyIds[i] = id;
+    if (m_grab && m_grab->body == old) m_grab->body = id;
+    for (std::size_t j = 0; j < m_scene.joints.size(); ++j) {
+        const simcore::SceneJoint& joint = m_scene.joints[j];
+        if (joint.bodyA == i || joint.bodyB == i) m_jointIds[j] = createLiveJoint(joint);
+    }
+}
+
+simcore::JointId SimulationController::createLiveJoint(const simcore::SceneJoint& joint) {
+    simcore::World& world = m_built->world;
+    // A point given in the authored scene, carried along with body `sceneBody` to its live pose.
+    const auto follow = [&](std::size_t sceneBody, const simcore::Vec3& point) {
+        const simcore::BodyCreationSettings& authored = m_scene.bodies.at(sceneBody).body;
+        const simcore::BodyId id = m_bodyIds.at(sceneBody);
+        return world.position(id) + world.orientation(id) * (glm::inverse(authored.orientation) * (point - authored.position));
+    };
+    simcore::JointCreationSettings settings = joint.joint;
+    settings.bodyA = m_bodyIds.at(joint.bodyA);
+    settings.bodyB = joint.bodyB ? m_bodyIds.at(*joint.bodyB) : simcore::BodyId{};
+    if (!world.contains(settings.bodyA) || (joint.bodyB && !world.contains(settings.bodyB)))
+        throw std::invalid_argument("a body of the joint is not in the running world");
+    settings.anchor = follow(joint.bodyA, settings.anchor);
+    settings.axis = world.orientation(settings.bodyA) * glm::inverse(m_scene.bodies[joint.bodyA].body.orientation) * settings.axis;
+    if (joint.bodyB) settings.anchorB = follow(*joint.bodyB, settings.anchorB);
+    return world.createJoint(settings);
+}
+
+bool SimulationController::insertJoint(int index, const simcore::SceneJoint& joint, QString* error) {
+    if (!m_built) return false;
+    m_scene.joints.insert(m_scene.joints.begin() + index, joint);
+    simcore::JointId id;  // stays invalid if the engine refuses the joint, so indices stay aligned
+    bool created = true;
+    try {
+        id = createLiveJoint(joint);
+    } catch (const std::exception& e) {
+        if (error) *error = QString::fromStdString(e.what());
+        created = false;
+    }
+    m_jointIds.insert(m_jointIds.begin() + index, id);
+    editedInPlace();
+    emit bodiesEdited();
+    return created;
+}
+
+void SimulationController::removeJoint(int index) {
+    if (!m_built) return;
+    const simcore::JointId id = m_jointIds.at(static_cast<std::size_t>(index));
+    if (m_built->world.contains(id)) m_built->world.destroyJoint(id);
+    m_jointIds.erase(m_jointIds.begin() + index);
+    m_scene.joints.erase(m_scene.joints.begin() + index);
+    editedInPlace();
+    emit bodiesEdited();
+}
+
+bool SimulationController::changeJoint(int index, const simcore::SceneJoint& joint, QString* error) {
+    if (!m_built) return false;
+    const auto i = static_cast<std::size_t>(index);
+    m_scene.joints.at(i) = joint;
+    // simcore cannot retune a joint: the old one goes, a new one is made at the bodies' live poses.
+    if (m_built->world.contains(m_jointIds[i])) m_built->world.destroyJoint(m_jointIds[i]);
+    m_jointIds[i] = {};
+    bool created = true;
+    try {
+        m_jointIds[i] = createLiveJoint(joint);
+    } catch (const std::exception& e) {
+        if (error) *error = QString::fromStdString(e.what());
+        created = false;
+    }
+    editedInPlace();
+    emit bodiesEdited();
+    return created;
 }
 
 bool SimulationController::applySettings(const simcore::WorldSettings& settings, QString* error) {
@@ -72,6 +268,7 @@ bool SimulationController::applySettings(const simcore::WorldSettings& settings,
 
 void SimulationController::play() {
     if (!m_built || isPlaying()) return;
+    rebuildIfEditedBeforeRun();
     m_accumulator = 0.0;
     m_clock.start();
     m_timer.start();
@@ -99,6 +296,7 @@ void SimulationController::stepOnce() {
 
 void SimulationController::stepFrames(int frames) {
     if (!m_built || frames <= 0) return;
+    rebuildIfEditedBeforeRun();
     advance(frames);
     emit stepped();
 }
@@ -138,6 +336,7 @@ std::optional<std::pair<simcore::Vec3, simcore::Vec3>> SimulationController::gra
 
 simcore::BodyId SimulationController::spawn(const simcore::SceneBody& body, QString* error) {
     if (!m_built) return {};
+    rebuildIfEditedBeforeRun();  // the thrown body joins the world that will run
     simcore::BodyId id;
     try {
         id = m_built->world.createBody(body.body);

@@ -4,6 +4,25 @@
 // a fixed-step accumulator; stepOnce/stepFrames advance deterministically, whatever the clock says.
 // Interaction with the running world (grabbing a body with a spring, throwing new bodies) goes
 // through simcore's public API only and is forgotten on Reset.
+//
+// Edits of the authored scene reach the running world in place (insertBody, changeBody, ...), so a
+// run paused mid-way keeps every other body's simulated state, and dragging one body of a thousand
+// costs one World::setTransform, not a new world:
+//   - a move or turn moves or turns the live body by as much as the edit moved the authored one
+//     (a body dragged where the run left it follows the cursor); Apply Simulated Pose and
+//     velocity edits set the live values; a colour is only drawn differently;
+//   - any other change of a body (shape, mass, motion, friction, restitution, CCD, name) re-creates
+//     it in its live pose and velocity, since simcore has no setters for them; its joints are
+//     re-created with it and its contacts start afresh (no warm start for one step);
+//   - a joint added or changed is created at its bodies' live poses: its anchors and axis follow
+//     body A (a distance joint's second point follows body B), and the bodies' current relative
+//     pose becomes its rest pose (zero hinge angle, zero slide) until Reset, which restores the
+//     authored one. simcore takes a joint's rest pose from its bodies at creation and cannot
+//     retune a joint in place.
+// A world that has not run since it was built is rebuilt from the authored scene before its first
+// step, so a run from an edited scene is bit for bit the run of that scene saved and reopened.
+
+#include "app/document/scene_document.h"
 
 #include "simcore/io/scene.h"
 #include "simcore/world/profiler.h"
@@ -49,6 +68,8 @@ public:
     const simcore::World* world() const;
     // bodyIds()[i] is the world body made from scene body i; bodies thrown in while running follow.
     const std::vector<simcore::BodyId>& bodyIds() const { return m_bodyIds; }
+    // jointIds()[i] is the world joint made from scene joint i.
+    const std::vector<simcore::JointId>& jointIds() const { return m_jointIds; }
     // Colours by bodyIds() index (unset when the scene leaves the choice to the viewer).
     const std::vector<std::optional<simcore::Vec3>>& authoredColors() const { return m_colors; }
     const simcore::Scene& authoredScene() const { return m_scene; }
@@ -69,6 +90,18 @@ public:
     bool isGrabbing() const { return m_grab.has_value(); }
     // The grabbed point in world space and its target, for drawing the spring.
     std::optional<std::pair<simcore::Vec3, simcore::Vec3>> grabLine() const;
+
+    // ---- Edits of the authored scene, applied in place (see the top of this file) ----
+    // Each mirrors the SceneDocument edit of the same name, with the document's new value. On
+    // false (*error says why) the engine refused the change and the world may lack the object:
+    // the caller rebuilds with setScene.
+    bool insertBody(int index, const simcore::SceneBody& body, QString* error = nullptr);
+    void removeBody(int index);  // its joints must be removed first, as the document does
+    void moveBody(int from, int to);
+    bool changeBody(int index, const simcore::SceneBody& body, BodyField field, QString* error = nullptr);
+    bool insertJoint(int index, const simcore::SceneJoint& joint, QString* error = nullptr);
+    void removeJoint(int index);
+    bool changeJoint(int index, const simcore::SceneJoint& joint, QString* error = nullptr);
 
     // Adds a body to the running world only (not to the document); Reset removes it again.
     // Returns an invalid id, with the reason in *error, if the engine rejects it.
@@ -97,6 +130,9 @@ public slots:
 signals:
     void stepped();                     // the world advanced; views redraw
     void worldRebuilt();                // a new world replaced the old one; cached per-body data is stale
+    void bodiesEdited();                // an edit added, removed, re-created, reordered or recoloured bodies
+                                        // or joints of the running world: cached per-body data is stale
+    void posesEdited();                 // an edit moved bodies or set their velocities: views redraw
     void bodySpawned(simcore::BodyId id);  // a body joined the running world
     void playingChanged(bool playing);
     void timeScaleChanged(double scale);
@@ -112,10 +148,20 @@ private:
     void tick();
     bool advance(int steps);  // false when the world went non-finite
     void applyGrabForce();
+    bool build(simcore::Scene scene, QString* error);  // replaces the world; playing or not stays as it is
+    // A world edited in place before it ran is rebuilt (see the top of this file).
+    void rebuildIfEditedBeforeRun();
+    void editedInPlace();
+    // Creates scene joint `index` at its bodies' live poses.
+    simcore::JointId createLiveJoint(const simcore::SceneJoint& joint);
+    // Replaces scene body `index` by a new world body with the authored settings and the live state.
+    void recreateBody(int index);
 
     simcore::Scene m_scene;
     std::unique_ptr<simcore::BuiltWorld> m_built;
     std::vector<simcore::BodyId> m_bodyIds;
+    std::vector<simcore::JointId> m_jointIds;
+    bool m_rebuildBeforeRun = false;
     std::vector<std::optional<simcore::Vec3>> m_colors;
     std::optional<Grab> m_grab;
     std::deque<StepSample> m_history;

@@ -65,6 +65,8 @@ constexpr unsigned kGrabColor = 0xFFFFFF;
 constexpr unsigned kJointColor = 0x30343A;  // near black: a rod or a hinge pin, drawn always
 constexpr float kContactNormalLength = 0.3f;  // m
 constexpr float kContactMarkSize = 0.05f;     // m, half-size of the cross marking a contact point
+constexpr float kJointMarkSize = 0.12f;       // m, half-size of the cross marking a selected joint's anchor
+constexpr float kJointAxisLength = 0.6f;      // m, either way along a selected hinge or slider axis
 
 // Fly speed in m/s per metre of camera distance, so flying suits a scene of any size; Shift boosts.
 constexpr float kFlySpeedPerMetre = 0.6f;
@@ -320,6 +322,9 @@ void Viewport::setSimulation(SimulationController* simulation) {
         };
         connect(m_simulation, &SimulationController::worldRebuilt, this, markDirty);
         connect(m_simulation, &SimulationController::bodySpawned, this, markDirty);
+        connect(m_simulation, &SimulationController::bodiesEdited, this, markDirty);
+        // A moved body is drawn from its live pose: the draw list still holds.
+        connect(m_simulation, &SimulationController::posesEdited, this, qOverload<>(&QWidget::update));
     }
     update();
 }
@@ -719,6 +724,14 @@ std::vector<Viewport::OverlayVertex> Viewport::overlayLines() const {
         lines.push_back({a, color});
         lines.push_back({b, color});
     };
+    // Three axis-aligned strokes through `point`, each 2 * halfSize long.
+    const auto addCross = [&addLine](const glm::vec3& point, float halfSize, const glm::vec3& color) {
+        for (int axis = 0; axis < 3; ++axis) {
+            glm::vec3 d(0.0f);
+            d[axis] = halfSize;
+            addLine(point - d, point + d, color);
+        }
+    };
     if (m_debugDraw && m_debugDraw->aabbs()) {
         const glm::vec3 color = srgb(kAabbColor);
         const simcore::BodyStorage& bodies = world->bodies();
@@ -745,31 +758,42 @@ std::vector<Viewport::OverlayVertex> Viewport::overlayLines() const {
             for (int k = 0; k < manifold.pointCount; ++k) {
                 const simcore::ContactPoint& p = manifold.points[static_cast<std::size_t>(k)];
                 const glm::vec3 mid = 0.5f * (p.pointA + p.pointB);
-                if (points) {
-                    for (int axis = 0; axis < 3; ++axis) {
-                        glm::vec3 d(0.0f);
-                        d[axis] = kContactMarkSize;
-                        addLine(mid - d, mid + d, pointColor);
-                    }
-                }
+                if (points) addCross(mid, kContactMarkSize, pointColor);
                 if (normals) addLine(mid, mid + manifold.normal * kContactNormalLength, normalColor);
             }
         }
     }
     // Joints: from each body's centre to the joint's point in the world (the anchor, or a distance
     // joint's second point, fixed for a joint to the world: a pendulum shows its rod), or between
-    // the two bodies' centres.
+    // the two bodies' centres. Selected joints are drawn in the selection colour, with their live
+    // anchor points marked and their hinge or slider axis drawn through the anchor.
     const auto& ids = m_simulation->bodyIds();
     const auto centreOf = [&](std::size_t sceneIndex) -> std::optional<glm::vec3> {
         if (sceneIndex >= ids.size() || !world->contains(ids[sceneIndex])) return std::nullopt;
         return world->centerOfMass(ids[sceneIndex]);
     };
-    for (const simcore::SceneJoint& joint : m_simulation->authoredScene().joints) {
+    const auto& joints = m_simulation->authoredScene().joints;
+    for (std::size_t j = 0; j < joints.size(); ++j) {
+        const simcore::SceneJoint& joint = joints[j];
+        const bool selected = m_document && m_document->selectedJoints().contains(static_cast<int>(j));
+        const glm::vec3 color = srgb(selected ? kSelectionColor : kJointColor);
         const auto a = centreOf(joint.bodyA);
         const glm::vec3 fixedPoint =
             joint.joint.type == simcore::JointType::Distance ? joint.joint.anchorB : joint.joint.anchor;
         const auto b = joint.bodyB ? centreOf(*joint.bodyB) : std::optional<glm::vec3>(fixedPoint);
-        if (a && b) addLine(*a, *b, srgb(kJointColor));
+        if (a && b) addLine(*a, *b, color);
+        const auto& jointIds = m_simulation->jointIds();
+        if (!selected || j >= jointIds.size() || !world->contains(jointIds[j])) continue;
+        const simcore::JointStorage& storage = world->joints();
+        const simcore::Joint& live = storage.joints[static_cast<std::size_t>(storage.denseIndex(jointIds[j]))];
+        const simcore::JointGeometry geometry = simcore::jointGeometry(live, storage.poseOf(live.bodyA, world->bodies()),
+                                                                       storage.poseOf(live.bodyB, world->bodies()));
+        const glm::vec3 anchorA = world->centerOfMass(live.bodyA) + geometry.armA;
+        addCross(anchorA, kJointMarkSize, color);
+        addCross(anchorA + geometry.separation, kJointMarkSize, color);
+        if (live.type == simcore::JointType::Hinge || live.type == simcore::JointType::Slider) {
+            addLine(anchorA - geometry.axisA * kJointAxisLength, anchorA + geometry.axisA * kJointAxisLength, color);
+        }
     }
     if (const auto grab = m_simulation->grabLine()) addLine(grab->first, grab->second, srgb(kGrabColor));
     return lines;
@@ -1045,7 +1069,7 @@ void Viewport::mouseReleaseEvent(QMouseEvent* event) {
         QList<int> selection = m_document->selectedBodies();
         if (extend && m_clickedBody >= 0) {
             if (!selection.removeOne(m_clickedBody)) selection << m_clickedBody;
-            m_document->setSelectedBodies(selection);
+            m_document->setSelection(selection, m_document->selectedJoints());
         } else if (!extend && m_clickedBody < 0) {
             m_document->setSelectedBodies({});
         } else if (!extend) {

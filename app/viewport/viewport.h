@@ -1,8 +1,8 @@
 #pragma once
 // The 3D view of the running world: lit, shadowed bodies over a ground grid and a sky gradient,
 // seen through an orbit camera (with a fly mode on the right mouse button and WASD). Draws the
-// document's selection outlined, sleeping bodies tinted and the debug overlays (bounds, contact
-// points and normals). Mouse interaction:
+// document's selection outlined (selected joints in the selection colour, anchors and axis
+// marked), sleeping bodies tinted and the debug overlays (bounds, contact points and normals). Mouse interaction:
 //   left click            select the body under the cursor (ray cast through simcore);
 //                         Ctrl/Shift-click adds or removes it; a click on nothing clears
 //   left drag on a body   paused: move the selection on a horizontal plane (one undo entry);

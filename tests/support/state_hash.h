@@ -1,0 +1,61 @@
+#pragma once
+// The determinism tests' fingerprint of a world: every body's pose, velocities and awake flag, in the
+// world's body order, hashed bit for bit. Built from a World, or from the bodies of an interplay-run
+// report (which prints each float as the double it converts to exactly), so the library, the editor
+// and the runner can be compared with one number.
+
+#include "simcore/world/world.h"
+
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+namespace test_support {
+
+struct BodyState {
+    simcore::Vec3 position{0.0f};  // the body's origin, as the runner reports it
+    simcore::Quat orientation{1.0f, 0.0f, 0.0f, 0.0f};
+    simcore::Vec3 linearVelocity{0.0f};
+    simcore::Vec3 angularVelocity{0.0f};
+    bool awake = false;
+};
+
+inline std::vector<BodyState> bodyStates(const simcore::World& world) {
+    const simcore::BodyStorage& b = world.bodies();
+    std::vector<BodyState> states(b.size());
+    for (std::size_t i = 0; i < b.size(); ++i) {
+        states[i] = {b.origin(i), b.orientation[i], b.linearVelocity[i], b.angularVelocity[i], b.awake[i] != 0};
+    }
+    return states;
+}
+
+// FNV-1a over the bits of every float and flag: any bit that differs changes it.
+inline std::uint64_t stateHash(const std::vector<BodyState>& states) {
+    std::uint64_t hash = 1469598103934665603ull;
+    const auto mixByte = [&hash](unsigned char byte) { hash = (hash ^ byte) * 1099511628211ull; };
+    const auto mixFloat = [&mixByte](float value) {
+        std::uint32_t bits;
+        std::memcpy(&bits, &value, sizeof bits);
+        for (int shift = 0; shift < 32; shift += 8) mixByte(static_cast<unsigned char>(bits >> shift));
+    };
+    const auto mixVec = [&mixFloat](const simcore::Vec3& v) {
+        mixFloat(v.x);
+        mixFloat(v.y);
+        mixFloat(v.z);
+    };
+    for (const BodyState& s : states) {
+        mixVec(s.position);
+        mixFloat(s.orientation.w);
+        mixFloat(s.orientation.x);
+        mixFloat(s.orientation.y);
+        mixFloat(s.orientation.z);
+        mixVec(s.linearVelocity);
+        mixVec(s.angularVelocity);
+        mixByte(s.awake ? 1 : 0);
+    }
+    return hash;
+}
+
+inline std::uint64_t stateHash(const simcore::World& world) { return stateHash(bodyStates(world)); }
+
+}  // namespace test_support
