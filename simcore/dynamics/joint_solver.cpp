@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <optional>
 
 namespace simcore {
 
@@ -132,7 +133,7 @@ void JointSolver::solve(BodyStorage& bodies, bool useBias) {
 }
 
 // Rows in order of importance, the most important last so it has the final word: motor, limits,
-// then the rigid rows (rotation, then the anchor point).
+// then the rigid rows (rotation and anchor point together).
 void JointSolver::solveConstraint(const Constraint& c, Joint& j, BodyPairState& v, const JointGeometry& g,
                                   bool useBias) const {
     const float inverseH = 1.0f / params_.substepDt;
@@ -162,12 +163,6 @@ void JointSolver::solveConstraint(const Constraint& c, Joint& j, BodyPairState& 
         v.linearB += (c.inverseMassB * impulse) * r.linear;
         v.angularB += impulse * (inertiaB * r.angularB);
     };
-    auto applyPoint = [&](const Vec3& impulse, const Vec3& armA, const Vec3& armB) {
-        v.linearA -= c.inverseMassA * impulse;
-        v.angularA -= inertiaA * glm::cross(armA, impulse);
-        v.linearB += c.inverseMassB * impulse;
-        v.angularB += inertiaB * glm::cross(armB, impulse);
-    };
     // A row that only pushes (C >= 0 wanted, impulse >= 0). Ahead of the limit it is speculative:
     // it lets the row close the gap within the substep but no further.
     auto solveOneSided = [&](const Row& r, float mass, float position, float& accumulated) {
@@ -194,56 +189,99 @@ void JointSolver::solveConstraint(const Constraint& c, Joint& j, BodyPairState& 
         apply(r, updated - j.impulses.motor);
         j.impulses.motor = updated;
     };
-    // Two rows along perpendicular directions d1, d2 solved as a block; `accumulated` is the
-    // block's impulse as a world vector (its d1, d2 components), since the directions turn.
-    auto solvePair = [&](const Row& r1, const Row& r2, const Vec3& d1, const Vec3& d2, float position1,
-                         float position2, Vec3& accumulated) {
-        const float k11 = coupling(r1, r1), k22 = coupling(r2, r2), k12 = coupling(r1, r2);
-        const float determinant = k11 * k22 - k12 * k12;
-        if (!(determinant > 0.0f)) return;
-        const float rhs1 = velocityAlong(r1) + rigid.biasRate * position1;
-        const float rhs2 = velocityAlong(r2) + rigid.biasRate * position2;
-        const float old1 = glm::dot(accumulated, d1), old2 = glm::dot(accumulated, d2);
-        const float lambda1 = -rigid.massScale * (k22 * rhs1 - k12 * rhs2) / determinant - rigid.impulseScale * old1;
-        const float lambda2 = -rigid.massScale * (k11 * rhs2 - k12 * rhs1) / determinant - rigid.impulseScale * old2;
-        apply(r1, lambda1);
-        apply(r2, lambda2);
-        accumulated = (old1 + lambda1) * d1 + (old2 + lambda2) * d2;
+    // All rigid rows of the joint as one soft constraint on their joint effective mass matrix
+    // K = J M^-1 J^T: up to three rotation rows (a torque impulse) and three anchor rows (an impulse
+    // at the anchors), K = [Kaa Kap; Kap^T Kpp]. Why one block: with an anchor far from a body's
+    // centre, the two kinds of row are strongly coupled (turning the body moves the anchor). Solved
+    // apart, each block's spring was scaled to the mass of its own rows alone (the inertia about
+    // the centre of mass, or the little mass that swings the anchor round it), not to what the
+    // joint holds (that inertia plus m r^2), so a long lever arm made the joint hundreds of times
+    // softer than its hertz: metres of stretch under load. A spring scaled to a mass matrix that
+    // turns with the bodies is not conservative, and at such stretch it pumped energy in until the
+    // bodies flew apart. Scaled to the joint's whole K, the stretch is that of the joint's hertz,
+    // and the pumping (which grows with the stretch squared) is negligible.
+    //
+    // A free direction f (a hinge's axis among the rotation rows, a slider's among the anchor rows)
+    // is taken out with the projection P = 1 - f f^T: the block P K P + f f^T on P's right-hand side
+    // gives the rows across f their solution and f's component zero.
+    struct RigidRows {
+        Vec3 rotationError{0.0f}, separation{0.0f};  // C of the rotation and anchor rows
+        Vec3 armA{0.0f}, armB{0.0f};                 // where the anchor rows act
+        std::optional<Vec3> freeRotation, freeTranslation;
     };
-    // No relative rotation: three angular rows, K = IA^-1 + IB^-1.
-    auto solveAngularBlock = [&](const Vec3& error) {
-        const Mat3 k = inertiaA + inertiaB;
-        const Vec3 rhs = v.angularB - v.angularA + rigid.biasRate * error;
-        const Vec3 impulse = -rigid.massScale * (glm::inverse(k) * rhs) - rigid.impulseScale * j.impulses.angular;
-        v.angularA -= inertiaA * impulse;
-        v.angularB += inertiaB * impulse;
-        j.impulses.angular += impulse;
-    };
-    // Anchors coincide: three linear rows, K = (mA + mB) 1 - [rA]x IA^-1 [rA]x - [rB]x IB^-1 [rB]x.
-    auto solvePoint = [&]() {
-        const Mat3 skewA = skew(g.armA), skewB = skew(g.armB);
-        const Mat3 k = Mat3(inverseMassSum) - skewA * inertiaA * skewA - skewB * inertiaB * skewB;
-        const Vec3 relative = v.linearB + glm::cross(v.angularB, g.armB) - v.linearA - glm::cross(v.angularA, g.armA);
-        const Vec3 rhs = relative + rigid.biasRate * g.separation;
-        const Vec3 impulse = -rigid.massScale * (glm::inverse(k) * rhs) - rigid.impulseScale * j.impulses.point;
-        applyPoint(impulse, g.armA, g.armB);
-        j.impulses.point += impulse;
+    auto solveRigid = [&](const RigidRows& rows) {
+        const Mat3 skewA = skew(rows.armA), skewB = skew(rows.armB);
+        const Mat3 turnA = inertiaA * skewA, turnB = inertiaB * skewB;  // angular velocity per anchor impulse
+        Mat3 kaa = inertiaA + inertiaB;
+        Mat3 kap = turnA + turnB;
+        Mat3 kpp = Mat3(inverseMassSum) - skewA * turnA - skewB * turnB;
+        Vec3 ra = v.angularB - v.angularA + rigid.biasRate * rows.rotationError;
+        Vec3 rp = v.linearB + glm::cross(v.angularB, rows.armB) - v.linearA - glm::cross(v.angularA, rows.armA) +
+                  rigid.biasRate * rows.separation;
+        Vec3 oldAngular = j.impulses.angular, oldPoint = j.impulses.point;
+        // P K P + f f^T for a symmetric K, by outer products (cheaper than two matrix products).
+        auto projectSymmetric = [](const Mat3& k, const Vec3& f) {
+            const Vec3 kf = k * f;
+            return k - glm::outerProduct(f, kf) - glm::outerProduct(kf, f) +
+                   (glm::dot(f, kf) + 1.0f) * glm::outerProduct(f, f);
+        };
+        auto project = [](const Vec3& x, const Vec3& f) { return x - glm::dot(f, x) * f; };
+        if (rows.freeRotation) {
+            const Vec3& f = *rows.freeRotation;
+            kaa = projectSymmetric(kaa, f);
+            kap -= glm::outerProduct(f, glm::transpose(kap) * f);  // P Kap = Kap - f (Kap^T f)^T
+            ra = project(ra, f);
+            oldAngular = project(oldAngular, f);
+        }
+        if (rows.freeTranslation) {
+            const Vec3& f = *rows.freeTranslation;
+            kpp = projectSymmetric(kpp, f);
+            kap -= glm::outerProduct(kap * f, f);  // Kap P = Kap - (Kap f) f^T
+            rp = project(rp, f);
+            oldPoint = project(oldPoint, f);
+        }
+        // Block elimination of the rotation rows (the Schur complement of Kaa). Both are positive
+        // definite unless float has lost them (a lever arm of kilometres on a small body): then the
+        // rows wait for a better pose rather than apply a non-finite impulse.
+        const Mat3 kaaInverse = glm::inverse(kaa);
+        const Mat3 couplingThrough = glm::transpose(kap) * kaaInverse;
+        const Mat3 schur = kpp - couplingThrough * kap;
+        const Vec3 xp = glm::inverse(schur) * (rp - couplingThrough * ra);
+        const Vec3 xa = kaaInverse * (ra - kap * xp);
+        if (!std::isfinite(glm::dot(xa, xa) + glm::dot(xp, xp))) return;
+        const Vec3 angular = -rigid.massScale * xa - rigid.impulseScale * oldAngular;
+        const Vec3 point = -rigid.massScale * xp - rigid.impulseScale * oldPoint;
+        v.linearA -= c.inverseMassA * point;
+        v.angularA -= inertiaA * angular + turnA * point;
+        v.linearB += c.inverseMassB * point;
+        v.angularB += inertiaB * angular + turnB * point;
+        j.impulses.angular = oldAngular + angular;
+        j.impulses.point = oldPoint + point;
     };
 
     switch (j.type) {
-        case JointType::Ball: solvePoint(); break;
+        case JointType::Ball: {
+            // Anchors coincide; rotation is free, so there are no rotation rows: solved alone.
+            const Mat3 skewA = skew(g.armA), skewB = skew(g.armB);
+            const Mat3 k = Mat3(inverseMassSum) - skewA * inertiaA * skewA - skewB * inertiaB * skewB;
+            const Vec3 relative =
+                v.linearB + glm::cross(v.angularB, g.armB) - v.linearA - glm::cross(v.angularA, g.armA);
+            const Vec3 rhs = relative + rigid.biasRate * g.separation;
+            const Vec3 impulse = -rigid.massScale * (glm::inverse(k) * rhs) - rigid.impulseScale * j.impulses.point;
+            v.linearA -= c.inverseMassA * impulse;
+            v.angularA -= inertiaA * glm::cross(g.armA, impulse);
+            v.linearB += c.inverseMassB * impulse;
+            v.angularB += inertiaB * glm::cross(g.armB, impulse);
+            j.impulses.point += impulse;
+            break;
+        }
         case JointType::Hinge: {
             // Motor and limits drive the angle of A relative to B: rows along minus the axis.
             const Row twist = angularRow(-g.axisA);
             if (j.motor) solveMotor(twist);
             if (j.limits) solveLimits(twist, g.hingeAngle(j), j.limits->lower, j.limits->upper);
             // Axis alignment: B's axis leaves A's by the rotation a x b, perpendicular to a.
-            Vec3 d1, d2;
-            orthonormalBasis(g.axisA, d1, d2);
-            const Vec3 misalignment = glm::cross(g.axisA, g.axisB);
-            solvePair(angularRow(d1), angularRow(d2), d1, d2, glm::dot(misalignment, d1), glm::dot(misalignment, d2),
-                      j.impulses.angular);
-            solvePoint();
+            solveRigid({glm::cross(g.axisA, g.axisB), g.separation, g.armA, g.armB, g.axisA, std::nullopt});
             break;
         }
         case JointType::Slider: {
@@ -252,16 +290,11 @@ void JointSolver::solveConstraint(const Constraint& c, Joint& j, BodyPairState& 
             const Row slide = linearRow(-g.axisA, armA, g.armB);  // A relative to B, as the twist
             if (j.motor) solveMotor(slide);
             if (j.limits) solveLimits(slide, g.slide(), j.limits->lower, j.limits->upper);
-            solveAngularBlock(g.rotationError());
-            Vec3 d1, d2;
-            orthonormalBasis(g.axisA, d1, d2);
-            solvePair(linearRow(d1, armA, g.armB), linearRow(d2, armA, g.armB), d1, d2, glm::dot(g.separation, d1),
-                      glm::dot(g.separation, d2), j.impulses.point);
+            solveRigid({g.rotationError(), g.separation, armA, g.armB, std::nullopt, g.axisA});
             break;
         }
         case JointType::Fixed:
-            solveAngularBlock(g.rotationError());
-            solvePoint();
+            solveRigid({g.rotationError(), g.separation, g.armA, g.armB, std::nullopt, std::nullopt});
             break;
         case JointType::Distance: {
             const float length = glm::length(g.separation);

@@ -1,6 +1,7 @@
 #pragma once
 // Sequential impulses on joints, in the same soft step as the contact solver: accumulated
-// impulses per row (blocks of 2 or 3 rows solved together), warm started from the previous step;
+// impulses per row (a joint's rigid rows solved together as one block), warm started from the
+// previous step;
 // rigid rows are soft constraints (joint hertz and damping ratio) while the bias is on and rigid
 // without it (the relax passes); limits are one-sided rows met speculatively, motors are rows
 // clamped to their maximum force, and a distance spring is a soft row of its own stiffness.
