@@ -140,33 +140,8 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_document, &SceneDocument::saved, this, &MainWindow::watchDocumentFile);
     // Each change of the document reaches the running world as it happens, in place: a run paused
     // mid-way keeps its state, and a drag moves one body instead of rebuilding the world.
-    connect(m_document, &SceneDocument::bodyInserted, this, [this](int index) {
-        followEdit([&](QString* error) { return m_simulation->insertBody(index, m_document->body(index), error); });
-    });
-    connect(m_document, &SceneDocument::bodyRemoved, this, [this](int index) {
-        followEdit([&](QString*) { m_simulation->removeBody(index); return true; });
-    });
-    connect(m_document, &SceneDocument::bodyMoved, this, [this](int from, int to) {
-        followEdit([&](QString*) { m_simulation->moveBody(from, to); return true; });
-    });
-    connect(m_document, &SceneDocument::bodyChanged, this, [this](int index, BodyField field) {
-        followEdit([&](QString* error) { return m_simulation->changeBody(index, m_document->body(index), field, error); });
-    });
-    connect(m_document, &SceneDocument::jointInserted, this, [this](int index) {
-        followEdit([&](QString* error) { return m_simulation->insertJoint(index, m_document->joint(index), error); });
-    });
-    connect(m_document, &SceneDocument::jointRemoved, this, [this](int index) {
-        followEdit([&](QString*) { m_simulation->removeJoint(index); return true; });
-    });
-    connect(m_document, &SceneDocument::jointChanged, this, [this](int index) {
-        followEdit([&](QString* error) { return m_simulation->changeJoint(index, m_document->joint(index), error); });
-    });
-    connect(m_document, &SceneDocument::settingsChanged, this, [this] {
-        QString error;
-        if (!m_simulation->applySettings(m_document->scene().settings, &error)) {
-            showSimulationError(tr("The settings cannot be used: %1").arg(error));
-        }
-    });
+    m_simulation->followDocument(m_document);
+    connect(m_simulation, &SimulationController::editFailed, this, &MainWindow::showSimulationError);
     connect(m_document, &SceneDocument::selectionChanged, this, &MainWindow::syncTreeSelection);
     connect(m_document, &SceneDocument::selectionChanged, this, &MainWindow::updateJointActions);
     connect(m_document, &SceneDocument::bodyChanged, this, &MainWindow::updateJointActions);
@@ -805,25 +780,11 @@ void MainWindow::duplicateSelection() {
 }
 
 void MainWindow::applySimulatedPose() {
-    const simcore::World* world = m_simulation->world();
-    if (!world) return;
-    QList<int> indices;
-    std::vector<simcore::SceneBody> after;
-    const auto& ids = m_simulation->bodyIds();
-    for (int i = 0; i < m_document->bodyCount() && i < static_cast<int>(ids.size()); ++i) {
-        const simcore::BodyId id = ids[static_cast<std::size_t>(i)];
-        if (!world->contains(id)) continue;
-        simcore::SceneBody body = m_document->body(i);
-        body.body.position = world->position(id);
-        body.body.orientation = world->orientation(id);
-        body.body.linearVelocity = world->linearVelocity(id);
-        body.body.angularVelocity = world->angularVelocity(id);
-        indices << i;
-        after.push_back(std::move(body));
-    }
-    if (indices.isEmpty()) return;
-    m_document->undoStack()->push(
-        new ChangeBodies(m_document, tr("Apply Simulated Pose"), BodyField::Pose, indices, std::move(after)));
+    QString error;
+    if (QUndoCommand* command = m_simulation->simulatedPoseCommand(m_document, &error))
+        m_document->undoStack()->push(command);
+    else
+        statusBar()->showMessage(error, 8000);
 }
 
 void MainWindow::throwBody() {
@@ -842,17 +803,8 @@ void MainWindow::throwBody() {
 
 // ---- Keeping things in step ------------------------------------------------------------------------
 
-void MainWindow::followEdit(const std::function<bool(QString* error)>& edit) {
-    QString error;
-    if (edit(&error)) return;
-    // The world could not take the edit in place: start it again from the edited scene.
-    QString rebuildError;
-    if (!m_simulation->setScene(m_document->scene(), &rebuildError)) {
-        showSimulationError(tr("The edited scene cannot be simulated: %1").arg(rebuildError));
-    }
-}
-
-void MainWindow::documentSceneReplaced() {    // A clean scene (new, opened, reverted) makes any earlier autosave stale.
+void MainWindow::documentSceneReplaced() {
+    // A clean scene (new, opened, reverted) makes any earlier autosave stale.
     if (!m_document->isModified()) removeRecoveryFile();
     QString error;
     if (!m_simulation->setScene(m_document->scene(), &error)) {

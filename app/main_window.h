@@ -119,7 +119,6 @@ private:
 
     // Brings the running world up to date with an edit of the document, in place (`edit` returns
     // false with the engine's reason when it cannot), or else by rebuilding it from the document.
-    void followEdit(const std::function<bool(QString* error)>& edit);
     void documentSceneReplaced();
     void syncTreeSelection();
     void addBody(int shapeType);

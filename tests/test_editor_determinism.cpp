@@ -8,6 +8,8 @@
 #include "support/runner_states.h"
 #include "support/state_hash.h"
 
+#include "app/document/undo_commands.h"
+
 #include "simcore/io/scene_io.h"
 
 #include <QTemporaryDir>

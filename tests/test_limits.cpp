@@ -9,6 +9,8 @@
 
 #include "simcore/io/scene_io.h"
 
+#include "support/sanitizers.h"
+
 #include <QtTest>
 
 #include <nlohmann/json.hpp>
@@ -30,17 +32,7 @@ using namespace simcore;
 
 namespace {
 
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kSanitized = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool kSanitized = true;
-#else
-constexpr bool kSanitized = false;
-#endif
-#else
-constexpr bool kSanitized = false;
-#endif
+using test_support::kSanitized;
 
 // Memory bounds are for a Release build; AddressSanitizer's redzones and quarantine take more.
 constexpr double kMemoryFactor = kSanitized ? 3.0 : 1.0;

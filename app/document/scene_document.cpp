@@ -187,6 +187,19 @@ QString SceneDocument::jointProblem(const simcore::SceneJoint& joint) const {
     return {};
 }
 
+QString SceneDocument::bodyNameProblem(int index, const QString& name) const {
+    if (name.trimmed().isEmpty()) return tr("A body needs a name.");
+    const std::string wanted = name.toStdString();
+    for (int other = 0; other < bodyCount(); ++other) {
+        if (other == index || m_scene.bodies[static_cast<std::size_t>(other)].body.name != wanted) continue;
+        if (!jointsOf(index).isEmpty() || !jointsOf(other).isEmpty())
+            return tr("Another body is called \"%1\", and a joint names its bodies in the file: choose a name of "
+                      "its own.")
+                .arg(name);
+    }
+    return {};
+}
+
 void SceneDocument::setSelection(QList<int> bodies, QList<int> joints) {
     const auto tidy = [](QList<int>& indices, int count) {
         std::sort(indices.begin(), indices.end());

@@ -101,6 +101,9 @@ public:
     QString uniqueJointName(const QString& base) const;
     // Why the engine would refuse `joint` between this scene's bodies, or an empty string.
     QString jointProblem(const simcore::SceneJoint& joint) const;
+    // Why body `index` cannot be called `name`, or an empty string: joints name their bodies in
+    // the file, so a name must stay unique where a joint uses it.
+    QString bodyNameProblem(int index, const QString& name) const;
 
     // ---- Selection (not part of the history; never dirties the document) ----
     // Bodies and joints by index: sorted, deduplicated, out-of-range dropped.

@@ -170,8 +170,8 @@ bool SceneTreeModel::setData(const QModelIndex& index, const QVariant& value, in
     const int body = bodyIndexOf(index);
     if (body < 0 || index.column() != NameColumn || role != Qt::EditRole) return false;
     const QString name = value.toString().trimmed();
-    if (name.isEmpty()) return false;  // a body always has a name to show and to find it by
     if (name == m_document->bodyName(body)) return true;
+    if (!m_document->bodyNameProblem(body, name).isEmpty()) return false;  // the view keeps the old name
     simcore::SceneBody renamed = m_document->body(body);
     renamed.body.name = name.toStdString();
     m_document->undoStack()->push(new ChangeBodies(m_document,

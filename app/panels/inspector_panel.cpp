@@ -183,9 +183,9 @@ void InspectorPanel::createBodyRows() {
         const QString name = m_name->text().trimmed();
         const int index = m_document->selectedBodies().first();
         if (name == m_document->bodyName(index)) return;
-        if (name.isEmpty()) {
+        if (const QString problem = m_document->bodyNameProblem(index, name); !problem.isEmpty()) {
             m_name->setText(m_document->bodyName(index));
-            showMessage(tr("A body needs a name."));
+            showMessage(problem);
             return;
         }
         editBodies(BodyField::Name, QString(), [&](simcore::SceneBody& b) { b.body.name = name.toStdString(); });

@@ -1,6 +1,9 @@
 #include "app/simulation/simulation_controller.h"
 
 #include "app/document/scene_edits.h"
+#include "app/document/undo_commands.h"
+
+#include "simcore/io/scene_io.h"
 
 #include <glm/gtc/quaternion.hpp>
 
@@ -406,6 +409,74 @@ bool SimulationController::advance(int steps) {
         return false;
     }
     return true;
+}
+
+void SimulationController::followDocument(const SceneDocument* document) {
+    connect(document, &SceneDocument::bodyInserted, this, [this, document](int index) {
+        follow(document, [&](QString* error) { return insertBody(index, document->body(index), error); });
+    });
+    connect(document, &SceneDocument::bodyRemoved, this, [this, document](int index) {
+        follow(document, [&](QString*) { removeBody(index); return true; });
+    });
+    connect(document, &SceneDocument::bodyMoved, this, [this, document](int from, int to) {
+        follow(document, [&](QString*) { moveBody(from, to); return true; });
+    });
+    connect(document, &SceneDocument::bodyChanged, this, [this, document](int index, BodyField field) {
+        follow(document, [&](QString* error) { return changeBody(index, document->body(index), field, error); });
+    });
+    connect(document, &SceneDocument::jointInserted, this, [this, document](int index) {
+        follow(document, [&](QString* error) { return insertJoint(index, document->joint(index), error); });
+    });
+    connect(document, &SceneDocument::jointRemoved, this, [this, document](int index) {
+        follow(document, [&](QString*) { removeJoint(index); return true; });
+    });
+    connect(document, &SceneDocument::jointChanged, this, [this, document](int index) {
+        follow(document, [&](QString* error) { return changeJoint(index, document->joint(index), error); });
+    });
+    connect(document, &SceneDocument::settingsChanged, this, [this, document] {
+        QString error;
+        if (!applySettings(document->scene().settings, &error)) emit editFailed(tr("The settings cannot be used: %1").arg(error));
+    });
+}
+
+void SimulationController::follow(const SceneDocument* document, const std::function<bool(QString* error)>& edit) {
+    QString error;
+    if (edit(&error)) return;
+    QString rebuildError;
+    if (!setScene(document->scene(), &rebuildError))
+        emit editFailed(tr("The edited scene cannot be simulated: %1").arg(rebuildError));
+}
+
+QUndoCommand* SimulationController::simulatedPoseCommand(SceneDocument* document, QString* error) const {
+    const simcore::World* live = world();
+    QList<int> indices;
+    simcore::Scene applied = document->scene();
+    for (int i = 0; live && i < document->bodyCount() && i < static_cast<int>(m_bodyIds.size()); ++i) {
+        const simcore::BodyId id = m_bodyIds[static_cast<std::size_t>(i)];
+        if (!live->contains(id)) continue;
+        simcore::BodyCreationSettings& body = applied.bodies[static_cast<std::size_t>(i)].body;
+        body.position = live->position(id);
+        body.orientation = live->orientation(id);
+        body.linearVelocity = live->linearVelocity(id);
+        body.angularVelocity = live->angularVelocity(id);
+        indices << i;
+    }
+    if (indices.isEmpty()) {
+        if (error) *error = tr("There is no simulated pose to apply.");
+        return nullptr;
+    }
+    // The file format's own check, so the document never holds a scene it could not reopen.
+    const simcore::SceneLoadResult reloaded = simcore::parseScene(simcore::serializeScene(applied), "simulated pose");
+    if (!reloaded.ok()) {
+        const auto refusal = std::find_if(reloaded.diagnostics.begin(), reloaded.diagnostics.end(),
+                                          [](const simcore::Diagnostic& d) { return d.severity == simcore::Diagnostic::Severity::Error; });
+        if (error) *error = tr("The simulated state cannot be saved in a scene file (%1: %2).")
+                                .arg(QString::fromStdString(refusal->path), QString::fromStdString(refusal->message));
+        return nullptr;
+    }
+    std::vector<simcore::SceneBody> after;
+    for (int i : indices) after.push_back(applied.bodies[static_cast<std::size_t>(i)]);
+    return new ChangeBodies(document, tr("Apply Simulated Pose"), BodyField::Pose, indices, std::move(after));
 }
 
 }  // namespace interplay

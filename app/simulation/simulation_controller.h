@@ -32,7 +32,10 @@
 #include <QString>
 #include <QTimer>
 
+class QUndoCommand;
+
 #include <deque>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -103,6 +106,17 @@ public:
     void removeJoint(int index);
     bool changeJoint(int index, const simcore::SceneJoint& joint, QString* error = nullptr);
 
+    // Keeps the running world in step with `document`: each of its edits is applied in place as
+    // it happens (the calls above) or, where the engine refuses that, the world is rebuilt from the
+    // edited scene; a failure of both is reported through editFailed. A replaced scene (new, open,
+    // revert) is left to the owner, who decides what to tell the user.
+    void followDocument(const SceneDocument* document);
+
+    // The undoable Apply Simulated Pose: every authored body takes its live pose and velocities.
+    // Null, with *error saying why, when there is nothing to apply or the live state is one the
+    // scene file cannot hold (a speed beyond the loader's limits, a non-finite value).
+    QUndoCommand* simulatedPoseCommand(SceneDocument* document, QString* error) const;
+
     // Adds a body to the running world only (not to the document); Reset removes it again.
     // Returns an invalid id, with the reason in *error, if the engine rejects it.
     simcore::BodyId spawn(const simcore::SceneBody& body, QString* error = nullptr);
@@ -137,6 +151,7 @@ signals:
     void playingChanged(bool playing);
     void timeScaleChanged(double scale);
     void simulationError(const QString& message);  // e.g. a non-finite state; playback stops
+    void editFailed(const QString& message);       // a followed edit could be neither applied nor rebuilt from
 
 private:
     struct Grab {
@@ -152,6 +167,8 @@ private:
     // A world edited in place before it ran is rebuilt (see the top of this file).
     void rebuildIfEditedBeforeRun();
     void editedInPlace();
+    // Applies a followed edit in place, or else rebuilds from the document's scene.
+    void follow(const SceneDocument* document, const std::function<bool(QString* error)>& edit);
     // Creates scene joint `index` at its bodies' live poses.
     simcore::JointId createLiveJoint(const simcore::SceneJoint& joint);
     // Replaces scene body `index` by a new world body with the authored settings and the live state.

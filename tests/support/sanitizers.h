@@ -1,0 +1,19 @@
+#pragma once
+// Whether this test binary runs under AddressSanitizer (scripts/test-sanitizers.sh), several times
+// slower than Release: long runs there check the same code paths with fewer steps or bodies.
+
+namespace test_support {
+
+#if defined(__SANITIZE_ADDRESS__)
+inline constexpr bool kSanitized = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+inline constexpr bool kSanitized = true;
+#else
+inline constexpr bool kSanitized = false;
+#endif
+#else
+inline constexpr bool kSanitized = false;
+#endif
+
+}  // namespace test_support
