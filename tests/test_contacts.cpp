@@ -564,18 +564,7 @@ void TestContacts::contactCapLimitsPairsBetweenDynamicBodiesOnly() {
 
 void TestContacts::longMixedRunStaysFiniteAndDoesNotGainEnergy() {
     World world(awakeSettings());
-    addGround(world, 0.6f, 0.0f, 20.0f);
-    // Walls keep rolling bodies on the ground (the arena is 30 m across, the walls 4 m high).
-    for (int side = 0; side < 4; ++side) {
-        BodyCreationSettings wall;
-        wall.name = "wall";
-        wall.motion = MotionType::Static;
-        const bool alongX = side < 2;
-        const float sign = side % 2 == 0 ? 1.0f : -1.0f;
-        wall.shape = Shape::box(alongX ? Vec3(0.5f, 2.0f, 16.0f) : Vec3(16.0f, 2.0f, 0.5f));
-        wall.position = alongX ? Vec3(sign * 15.5f, 2.0f, 0.0f) : Vec3(0.0f, 2.0f, sign * 15.5f);
-        world.createBody(wall);
-    }
+    addArena(world, 30.0f);
 
     std::mt19937 rng(20240611u);
     auto uniform = [&rng](float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(rng); };

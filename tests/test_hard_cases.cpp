@@ -291,16 +291,7 @@ void TestHardCases::deepOverlapIsPushedOutAtBoundedSpeed() {
 // random push every second: never a non-finite value, never more energy than was put in.
 void TestHardCases::randomMixedSceneSoak() {
     World world(awakeSettings());
-    addGround(world, 0.6f, 0.0f, 10.0f);
-    for (int side = 0; side < 4; ++side) {
-        BodyCreationSettings wall;
-        wall.motion = MotionType::Static;
-        const bool alongX = side < 2;
-        const float sign = side % 2 == 0 ? 1.0f : -1.0f;
-        wall.shape = Shape::box(alongX ? Vec3(0.5f, 2.0f, 6.0f) : Vec3(6.0f, 2.0f, 0.5f));
-        wall.position = alongX ? Vec3(sign * 5.5f, 2.0f, 0.0f) : Vec3(0.0f, 2.0f, sign * 5.5f);
-        world.createBody(wall);
-    }
+    addArena(world, 10.0f);
     std::mt19937 rng(7u);
     auto uniform = [&rng](float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(rng); };
     std::vector<BodyId> bodies;

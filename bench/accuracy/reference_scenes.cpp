@@ -1,5 +1,7 @@
 #include "reference_scenes.h"
 
+#include "tests/support/worlds.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -84,8 +86,9 @@ double largestCentreDistance(const Observation& observed, const Observation* con
 }
 
 // ---- incline: a static 30° ramp (rising towards +x) with a body touching its top face 8 m up-slope
+// (the tests' own incline, tests/support/worlds.h)
 
-constexpr float kInclineTheta = simcore::kPi / 6.0f;
+constexpr float kInclineTheta = test_support::Incline::kTheta;
 constexpr double kSlideFriction = 0.3;  // below tan 30° = 0.577: slides
 constexpr double kRollFriction = 0.5;   // above 2/7 tan 30° = 0.165: rolls without slipping
 
@@ -93,28 +96,11 @@ constexpr double kRollFriction = 0.5;   // above 2/7 tan 30° = 0.165: rolls wit
 Observation runIncline(const WorldSettings& settings, double seconds, SteppingTimer& timer, const Shape& shape,
                        float offsetAlongNormal, float friction) {
     World world(settings);
-    const Quat rotation = glm::angleAxis(kInclineTheta, Vec3(0.0f, 0.0f, 1.0f));
-    const Vec3 normal = rotation * Vec3(0.0f, 1.0f, 0.0f);
-    const Vec3 downSlope = rotation * Vec3(-1.0f, 0.0f, 0.0f);
-    BodyCreationSettings ramp;
-    ramp.name = "ramp";
-    ramp.motion = MotionType::Static;
-    ramp.shape = Shape::box(Vec3(12.0f, 0.1f, 2.0f));
-    ramp.orientation = rotation;
-    ramp.friction = friction;
-    world.createBody(ramp);
-    BodyCreationSettings b;
-    b.name = "body";
-    b.shape = shape;
-    b.mass = 1.0f;
-    b.orientation = rotation;
-    b.position = normal * (0.1f + offsetAlongNormal) - downSlope * 8.0f;
-    b.friction = friction;  // both sides the same: the pair's sqrt(mu mu) is mu
-    const BodyId body = world.createBody(b);
-    const Vec3 start = world.centerOfMass(body);
+    const test_support::Incline incline(world, shape, offsetAlongNormal, friction);
+    const Vec3 start = world.centerOfMass(incline.body);
     for (int i = 0, n = stepCount(settings, seconds); i < n; ++i) timer.step(world);
     Observation o;
-    o.values = {glm::dot(world.centerOfMass(body) - start, downSlope), world.simulatedTime()};
+    o.values = {glm::dot(world.centerOfMass(incline.body) - start, incline.downSlope), world.simulatedTime()};
     o.finite = !world.findNonFiniteBody();
     return o;
 }

@@ -36,6 +36,23 @@ inline BodyId addGround(World& world, float friction = 0.6f, float restitution =
     return world.createBody(g);
 }
 
+// A ground with four static walls 4 m high around a square arena `inner` metres across, so that
+// rolling bodies stay on it.
+inline void addArena(World& world, float inner) {
+    const float half = 0.5f * inner;
+    addGround(world, 0.6f, 0.0f, half + 4.0f);
+    for (int side = 0; side < 4; ++side) {
+        BodyCreationSettings wall;
+        wall.name = "wall";
+        wall.motion = MotionType::Static;
+        const bool alongX = side < 2;
+        const float sign = side % 2 == 0 ? 1.0f : -1.0f;
+        wall.shape = Shape::box(alongX ? Vec3(0.5f, 2.0f, half + 1.0f) : Vec3(half + 1.0f, 2.0f, 0.5f));
+        wall.position = alongX ? Vec3(sign * (half + 0.5f), 2.0f, 0.0f) : Vec3(0.0f, 2.0f, sign * (half + 0.5f));
+        world.createBody(wall);
+    }
+}
+
 inline BodyCreationSettings cube(const Vec3& position, float mass = 1.0f, float halfSize = 0.5f, float friction = 0.6f) {
     BodyCreationSettings b;
     b.name = "cube";
