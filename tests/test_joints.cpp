@@ -10,6 +10,7 @@
 #include "simcore/world/world.h"
 
 #include "support/allocation_counter.h"
+#include "support/worlds.h"
 
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -73,16 +74,6 @@ JointCreationSettings jointSettings(JointType type, BodyId a, BodyId b, const Ve
     j.anchor = anchor;
     j.axis = axis;
     return j;
-}
-
-// Arithmetic-geometric mean: the exact pendulum period is T0 / agm(1, cos(theta0 / 2)).
-double agm(double a, double b) {
-    for (int i = 0; i < 30; ++i) {
-        const double m = 0.5 * (a + b);
-        b = std::sqrt(a * b);
-        a = m;
-    }
-    return a;
 }
 
 // Mean period of a signal from its upward zero crossings (linear interpolation between steps).
@@ -173,7 +164,8 @@ void TestJoints::pendulumPeriod() {
 
     const double pointT0 = 2.0 * M_PI * std::sqrt(kLength / double(kG));
     const double physicalT0 = pointT0 * std::sqrt(1.0 + 0.4 * double(kRadius * kRadius) / double(kLength * kLength));
-    const double expected = (jointType == JointType::Distance ? pointT0 : physicalT0) / agm(1.0, std::cos(kTheta0 / 2.0));
+    const double expected =
+        (jointType == JointType::Distance ? pointT0 : physicalT0) / test_support::agm(1.0, std::cos(kTheta0 / 2.0));
 
     PeriodMeter meter;
     float maxError = 0.0f;

@@ -154,22 +154,12 @@ ReferenceScene inclineRoll() {
 
 // ---- pendulum on a hinge
 
-// Arithmetic-geometric mean: the exact pendulum period is T0 / agm(1, cos(theta0 / 2)).
-double agm(double a, double b) {
-    for (int i = 0; i < 30; ++i) {
-        const double m = 0.5 * (a + b);
-        b = std::sqrt(a * b);
-        a = m;
-    }
-    return a;
-}
-
 constexpr double kPendulumLength = 1.0, kBobRadius = 0.05, kTheta0 = 0.5;
 
 double exactPendulumPeriod() {
     const double pointT0 = 2.0 * 3.14159265358979323846 * std::sqrt(kPendulumLength / kG);
     const double physicalT0 = pointT0 * std::sqrt(1.0 + 0.4 * kBobRadius * kBobRadius / (kPendulumLength * kPendulumLength));
-    return physicalT0 / agm(1.0, std::cos(kTheta0 / 2.0));
+    return physicalT0 / test_support::agm(1.0, std::cos(kTheta0 / 2.0));
 }
 
 ReferenceScene pendulum() {

@@ -93,6 +93,16 @@ struct Incline {
     float slopeSpeed(const World& world) const { return glm::dot(world.linearVelocity(body), downSlope); }
 };
 
+// Arithmetic-geometric mean: a pendulum's exact large-amplitude period is T0 / agm(1, cos(theta0 / 2)).
+inline double agm(double a, double b) {
+    for (int i = 0; i < 30; ++i) {
+        const double m = 0.5 * (a + b);
+        b = std::sqrt(a * b);
+        a = m;
+    }
+    return a;
+}
+
 // Kinetic + potential energy of the dynamic bodies (potential relative to y = 0).
 inline double totalEnergy(const World& world) { return world.kineticEnergy() + world.potentialEnergy(); }
 
