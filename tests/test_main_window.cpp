@@ -44,6 +44,7 @@
 #include <QTreeView>
 #include <QUndoStack>
 
+#include <limits>
 #include <map>
 #include <memory>
 #include <set>
@@ -155,6 +156,7 @@ private slots:
     void frameSelectionAimsAtTheSelectedBody();
     void draggingABodyMovesItAsOneUndoEntry();
     void playStepResetLeaveTheAuthoredSceneIntact();
+    void nonFiniteStateStopsPlaybackWithAMessage();
     void grabbingWhilePlayingPullsTheBody();
     void applySimulatedPoseIsUndoable();
     void addDuplicateDeleteActions();
@@ -546,6 +548,33 @@ void TestMainWindow::playStepResetLeaveTheAuthoredSceneIntact() {
     QCOMPARE(simulation->world()->stepCount(), std::uint64_t(0));
     QVERIFY(glm::length(simulation->world()->position(box) - m_window->document()->body(1).body.position) < 1e-5f);
     QCOMPARE(sceneText(m_window->document()->scene()), authored);
+}
+
+// The last line of defence. No valid scene takes the engine to a non-finite state any more (the
+// joint solver drops an overflowing result and every velocity is bounded: test_joints, test_limits
+// and the soak check that), so the fault is injected: a NaN written into the live world's storage,
+// as a future engine bug would leave it. The window must stop playing, say which body went wrong,
+// and leave the document as it was; Reset gives a clean world back.
+void TestMainWindow::nonFiniteStateStopsPlaybackWithAMessage() {
+    interplay::SimulationController* simulation = m_window->simulation();
+    const std::string authored = sceneText(m_window->document()->scene());
+    m_window->action("step")->trigger();
+    const simcore::BodyId box = simulation->bodyIds()[1];
+    auto& storage = const_cast<simcore::BodyStorage&>(simulation->world()->bodies());
+    storage.linearVelocity[static_cast<std::size_t>(storage.denseIndex(box))].x = std::numeric_limits<float>::quiet_NaN();
+
+    m_window->action("play")->trigger();
+    QTRY_VERIFY_WITH_TIMEOUT(!simulation->isPlaying(), 5000);
+    QCOMPARE(m_prompts.errors.size(), 1);
+    const QString name = QString::fromStdString(simulation->world()->name(box));
+    QVERIFY2(m_prompts.errors[0].contains("non-finite") && m_prompts.errors[0].contains('"' + name + '"'),
+             qPrintable(m_prompts.errors[0]));
+    QCOMPARE(sceneText(m_window->document()->scene()), authored);
+    QVERIFY(!m_window->isWindowModified());
+
+    m_window->action("reset")->trigger();
+    QVERIFY(!simulation->world()->findNonFiniteBody());
+    QCOMPARE(simulation->world()->stepCount(), std::uint64_t(0));
 }
 
 void TestMainWindow::grabbingWhilePlayingPullsTheBody() {

@@ -10,15 +10,20 @@ namespace simcore {
 namespace {
 
 // Safety bounds on a dynamic body's velocity, far beyond anything a substep can resolve, so that
-// no instability (a violently over-constrained assembly, say) can grow a state to infinity: at
-// worst a body flies off at kMaxLinearSpeed, spinning a quarter turn per substep (Box2D bounds
-// rotation the same way).
+// no instability (a violently over-constrained assembly, a joint torn kilometres apart) can grow a
+// state to infinity: at worst a body flies off at kMaxLinearSpeed, spinning a quarter turn per
+// substep (Box2D bounds rotation the same way).
 constexpr float kMaxLinearSpeed = 1e5f;                      // m/s, ten times the loader's limit
 constexpr float kMaxRotationPerSubstep = 0.25f * 3.14159265f;  // rad
 
 void boundSpeed(Vec3& velocity, float maxSpeed) {
     const float speed2 = glm::dot(velocity, velocity);
     if (speed2 > maxSpeed * maxSpeed) velocity *= maxSpeed / std::sqrt(speed2);
+}
+
+void boundVelocity(Vec3& linear, Vec3& angular, float dt) {
+    boundSpeed(linear, kMaxLinearSpeed);
+    boundSpeed(angular, kMaxRotationPerSubstep / dt);
 }
 
 // Torque-free Euler equations I dw/dt + w x (I w) = 0 in body axes, by the implicit midpoint rule:
@@ -56,13 +61,21 @@ Vec3 solveGyroscopic(const Quat& orientation, const Mat3& bodyInertia, const Vec
 void BodyIntegrator::integrateVelocities(BodyStorage& bodies, Integrator method, const VelocityIntegration& params,
                                          float dt) {
     const std::size_t n = bodies.size();
-    if (method != Integrator::SymplecticEuler) {
-        // Kinematic bodies too: their start velocity is their only velocity.
-        startLinear_.assign(bodies.linearVelocity.begin(), bodies.linearVelocity.end());
-        startAngular_.assign(bodies.angularVelocity.begin(), bodies.angularVelocity.end());
+    const bool keepStart = method != Integrator::SymplecticEuler;
+    if (keepStart) {
+        startLinear_.resize(n);
+        startAngular_.resize(n);
     }
     for (std::size_t i = 0; i < n; ++i) {
-        if (bodies.motion[i] != MotionType::Dynamic || !bodies.awake[i]) continue;
+        const bool moves = bodies.motion[i] == MotionType::Dynamic && bodies.awake[i];
+        // The relax passes of the substep before may have left a torn assembly beyond the bound.
+        if (moves) boundVelocity(bodies.linearVelocity[i], bodies.angularVelocity[i], dt);
+        if (keepStart) {
+            // Kinematic bodies too: their start velocity is their only velocity.
+            startLinear_[i] = bodies.linearVelocity[i];
+            startAngular_[i] = bodies.angularVelocity[i];
+        }
+        if (!moves) continue;
 
         Vec3 v = bodies.linearVelocity[i];
         Vec3 w = bodies.angularVelocity[i];
@@ -78,15 +91,18 @@ void BodyIntegrator::integrateVelocities(BodyStorage& bodies, Integrator method,
     }
 }
 
+void BodyIntegrator::boundVelocities(BodyStorage& bodies, float dt) const {
+    for (std::size_t i = 0; i < bodies.size(); ++i)
+        if (bodies.motion[i] == MotionType::Dynamic && bodies.awake[i])
+            boundVelocity(bodies.linearVelocity[i], bodies.angularVelocity[i], dt);
+}
+
 void BodyIntegrator::integratePositions(BodyStorage& bodies, Integrator method, float dt) const {
     const std::size_t n = bodies.size();
     for (std::size_t i = 0; i < n; ++i) {
         if (bodies.motion[i] == MotionType::Static || !bodies.awake[i]) continue;
 
-        if (bodies.motion[i] == MotionType::Dynamic) {
-            boundSpeed(bodies.linearVelocity[i], kMaxLinearSpeed);
-            boundSpeed(bodies.angularVelocity[i], kMaxRotationPerSubstep / dt);
-        }
+        if (bodies.motion[i] == MotionType::Dynamic) boundVelocity(bodies.linearVelocity[i], bodies.angularVelocity[i], dt);
         Vec3 v = bodies.linearVelocity[i];
         Vec3 w = bodies.angularVelocity[i];
         if (method == Integrator::ExplicitEuler) {

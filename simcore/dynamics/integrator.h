@@ -24,6 +24,9 @@ public:
     // Advances centres of mass and orientations, renormalises orientations and refreshes world-
     // frame inverse inertia. `method` must be the one given to this substep's integrateVelocities.
     void integratePositions(BodyStorage& bodies, Integrator method, float dt) const;
+    // Holds every awake dynamic body to the safety bound (1e5 m/s, a quarter turn per substep dt)
+    // that both passes above apply before they use a velocity.
+    void boundVelocities(BodyStorage& bodies, float dt) const;
 
 private:
     std::vector<Vec3> startLinear_, startAngular_;  // by dense index; reused, so the step never allocates

@@ -49,8 +49,15 @@ JointSolver::BodyPairState JointSolver::load(const Constraint& c, const BodyStor
     return state;
 }
 
-// Bodies that do not move in the constraint get their velocities back unchanged.
-void JointSolver::store(const Constraint& c, const BodyPairState& state, BodyStorage& bodies) const {
+// Bodies that do not move in the constraint get their velocities back unchanged. A joint torn far
+// apart (lever arms of kilometres on a light body) can overflow float within one pass: then its
+// result is dropped, and its accumulated impulses with it, so neither inf nor NaN reaches the
+// bodies or the next warm start. Any finite state is kept as it is, so no other scene changes.
+void JointSolver::store(const Constraint& c, Joint& joint, const BodyPairState& state, BodyStorage& bodies) const {
+    if (!isFinite(state.linearA) || !isFinite(state.angularA) || !isFinite(state.linearB) || !isFinite(state.angularB)) {
+        joint.impulses = {};
+        return;
+    }
     bodies.linearVelocity[c.bodyA] = state.linearA;
     bodies.angularVelocity[c.bodyA] = state.angularA;
     if (c.bodyB == kWorld) return;
@@ -87,9 +94,9 @@ void JointSolver::prepare(JointStorage& joints, const BodyStorage& bodies, const
     }
 }
 
-void JointSolver::warmStart(BodyStorage& bodies) const {
+void JointSolver::warmStart(BodyStorage& bodies) {
     for (const Constraint& c : constraints_) {
-        const Joint& j = joints_->joints[c.joint];
+        Joint& j = joints_->joints[c.joint];
         const JointGeometry g = jointGeometry(j, poseOf(c.bodyA, bodies), poseOf(c.bodyB, bodies));
         const JointImpulses& impulse = j.impulses;
         // Along the row of the motor and the lower limit (the upper limit's row is reversed).
@@ -118,7 +125,7 @@ void JointSolver::warmStart(BodyStorage& bodies) const {
         v.angularA -= v.inverseInertiaA * (glm::cross(armA, linear) + angular);
         v.linearB += c.inverseMassB * linear;
         v.angularB += v.inverseInertiaB * (glm::cross(g.armB, linear) + angular);
-        store(c, v, bodies);
+        store(c, j, v, bodies);
     }
 }
 
@@ -128,7 +135,7 @@ void JointSolver::solve(BodyStorage& bodies, bool useBias) {
         const JointGeometry g = jointGeometry(j, poseOf(c.bodyA, bodies), poseOf(c.bodyB, bodies));
         BodyPairState state = load(c, bodies);
         solveConstraint(c, j, state, g, useBias);
-        store(c, state, bodies);
+        store(c, j, state, bodies);
     }
 }
 

@@ -30,7 +30,7 @@ public:
     // kinematic bodies (and the world) take part with infinite mass. `joints` must outlive the
     // step's solver calls.
     void prepare(JointStorage& joints, const BodyStorage& bodies, const Params& params);
-    void warmStart(BodyStorage& bodies) const;
+    void warmStart(BodyStorage& bodies);
     void solve(BodyStorage& bodies, bool useBias);
 
     std::size_t constraintCount() const { return constraints_.size(); }
@@ -48,7 +48,7 @@ private:
     // long link turns a lot within a step, and a stale inertia misjudges the joint's mass).
     struct BodyPairState;
     BodyPairState load(const Constraint& c, const BodyStorage& bodies) const;
-    void store(const Constraint& c, const BodyPairState& state, BodyStorage& bodies) const;
+    void store(const Constraint& c, Joint& joint, const BodyPairState& state, BodyStorage& bodies) const;
 
     JointBodyPose poseOf(std::uint32_t body, const BodyStorage& bodies) const;
     void solveConstraint(const Constraint& c, Joint& joint, BodyPairState& state, const JointGeometry& g,

@@ -368,6 +368,12 @@ void World::step() {
             }
         }
     }
+    if (solveJoints) {
+        // Joints are the one source that can pass the bound within a step (a torn assembly, in its
+        // last relax passes), so only they pay for holding the state between steps to it.
+        ScopedStageTimer timer(slot(Stage::SolveConstraints));
+        integrator_.boundVelocities(bodies_, h);
+    }
     if (solveContacts) {
         ScopedStageTimer timer(slot(Stage::SolveConstraints));
         contactSolver_.storeImpulses(contactManager_.contacts());
