@@ -449,6 +449,7 @@ private:
         case JointField::Anchor: s.anchor += m_random.vec(-1.0f, 1.0f); break;
         case JointField::AnchorB: s.anchorB += m_random.vec(-1.0f, 1.0f); break;
         case JointField::Axis: s.axis = m_random.direction(); break;
+        case JointField::Placement: return;  // not an inspector field: Apply Simulated Pose's own
         case JointField::Limits:
             if (s.limits) s.limits.reset();
             else s.limits = JointLimits{m_random.uniform(-1.0f, 0.0f), m_random.uniform(0.0f, 1.0f)};
@@ -751,6 +752,7 @@ private slots:
     void randomEditsWhilePlaying();
     void duplicateNameOfAJointedBodyIsRefused();
     void simulatedPoseOutsideTheFileLimits();
+    void simulatedPoseCarriesJoints();
     void oversizedFileIsRefusedUnread();
 };
 
@@ -828,6 +830,60 @@ void TestEditorSoak::simulatedPoseOutsideTheFileLimits() {
 
     const SceneLoadResult loaded = parseScene(text(session.document.scene()), "applied");
     QVERIFY(loaded.ok());
+}
+
+void TestEditorSoak::simulatedPoseCarriesJoints() {
+    // Joints are authored in world space at the bodies' authored poses. Apply Simulated Pose moves
+    // the bodies, so it must move their joints too, or a joint would hold other points of its
+    // bodies than in the run: here two hinged boxes fall 4.9 m, and a joint left behind would hang
+    // them from a point 4.9 m above (a lever arm the engine cannot hold). The applied joint must
+    // hold the same points of both bodies, the live joint is kept (the run goes on), and undo
+    // gives back the authored joint exactly.
+    test_support::EditorSession session;
+    Scene scene;
+    for (const float x : {-0.5f, 0.5f})
+        scene.bodies.push_back(interplay::templateBody(ShapeType::Box, x < 0.0f ? QStringLiteral("Left") : QStringLiteral("Right"), {x, 5.0f, 0.0f}));
+    scene.bodies[1].body.angularVelocity = {0.0f, 0.0f, 2.0f};  // the pair swings about the hinge as it falls
+    scene.joints.push_back(interplay::templateJoint(JointType::Hinge, QStringLiteral("Hinge"), scene.bodies, 0, 1));
+    session.document.restoreRecovered(scene, QString());
+    const SceneJoint authored = session.document.joint(0);
+    // Where the hinge sits on each body, in the body's axes.
+    const auto localAnchor = [&](const SceneJoint& joint, int body) {
+        const simcore::BodyCreationSettings& b = session.document.body(body).body;
+        return glm::inverse(b.orientation) * (joint.joint.anchor - b.position);
+    };
+    const Vec3 onLeft = localAnchor(authored, 0), onRight = localAnchor(authored, 1);
+
+    session.simulation.stepFrames(60);
+    const World* world = session.simulation.world();
+    const JointId live = session.simulation.jointIds()[0];
+    const std::uint64_t steps = world->stepCount();
+    QVERIFY(world->position(session.simulation.bodyIds()[0]).y < 1.0f);
+    QUndoCommand* pose = session.simulatedPoseCommand();
+    QVERIFY(pose);
+    session.document.undoStack()->push(pose);
+
+    const SceneJoint applied = session.document.joint(0);
+    const float tolerance = 2.0f * world->jointError(live).position + 1e-5f;
+    QVERIFY2(glm::length(localAnchor(applied, 0) - onLeft) < 1e-5f, "the joint moved on the left body");
+    QVERIFY2(glm::length(localAnchor(applied, 1) - onRight) < tolerance, "the joint moved on the right body");
+    const Vec3 axisInLeft = glm::inverse(session.document.body(0).body.orientation) * applied.joint.axis;
+    QVERIFY(glm::length(axisInLeft - glm::inverse(scene.bodies[0].body.orientation) * authored.joint.axis) < 1e-5f);
+    QCOMPARE(session.simulation.jointIds()[0], live);
+    QCOMPARE(world->stepCount(), steps);
+
+    // Rebuilt from the document (Reset), the joint holds the bodies where the live one does.
+    const auto jointOf = [](const World& w, JointId id) { return w.joints().joints[static_cast<std::size_t>(w.joints().denseIndex(id))]; };
+    const simcore::Joint running = jointOf(*world, live);
+    session.simulation.reset();
+    const simcore::Joint rebuilt = jointOf(*session.simulation.world(), session.simulation.jointIds()[0]);
+    QVERIFY(glm::length(rebuilt.localAnchorA - running.localAnchorA) < 1e-5f);
+    QVERIFY(glm::length(rebuilt.localAnchorB - running.localAnchorB) < tolerance);
+
+    session.document.undoStack()->undo();
+    QVERIFY(interplay::sameSceneJoint(session.document.joint(0), authored));
+    QCOMPARE(session.document.undoStack()->undoText(), QString());
+    QVERIFY(session.editErrors.isEmpty());
 }
 
 void TestEditorSoak::oversizedFileIsRefusedUnread() {

@@ -43,6 +43,7 @@ enum class JointField {
     Anchor,
     AnchorB,  // a distance joint's point on body B
     Axis,
+    Placement,  // anchors and axis together, carried with the bodies (Apply Simulated Pose)
     Limits,   // on/off and bounds
     Motor,    // on/off, speed and maximum force or torque
     Lengths,  // a distance joint's minimum and maximum length

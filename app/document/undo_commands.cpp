@@ -129,8 +129,8 @@ void ReorderBody::undo() {
 
 template <typename Object>
 ChangeObjects<Object>::ChangeObjects(SceneDocument* document, const QString& text, Field field, QList<int> indices,
-                                     std::vector<Object> after, bool mergeable)
-    : QUndoCommand(text), m_document(document), m_field(field), m_indices(std::move(indices)),
+                                     std::vector<Object> after, bool mergeable, QUndoCommand* parent)
+    : QUndoCommand(text, parent), m_document(document), m_field(field), m_indices(std::move(indices)),
       m_after(std::move(after)), m_mergeable(mergeable) {
     Q_ASSERT(static_cast<std::size_t>(m_indices.size()) == m_after.size());
     m_before.reserve(m_after.size());

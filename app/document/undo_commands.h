@@ -124,7 +124,7 @@ public:
     using Field = typename ObjectAccess<Object>::Field;
 
     ChangeObjects(SceneDocument* document, const QString& text, Field field, QList<int> indices, std::vector<Object> after,
-                  bool mergeable = false);
+                  bool mergeable = false, QUndoCommand* parent = nullptr);
     int id() const override { return static_cast<int>(ObjectAccess<Object>::kCommandId); }
     bool mergeWith(const QUndoCommand* other) override;
     void redo() override;

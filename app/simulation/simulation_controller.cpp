@@ -192,22 +192,27 @@ void SimulationController::recreateBody(int index) {
     }
 }
 
+simcore::Vec3 SimulationController::livePoint(std::size_t sceneBody, const simcore::Vec3& point) const {
+    const simcore::BodyCreationSettings& authored = m_scene.bodies.at(sceneBody).body;
+    const simcore::BodyId id = m_bodyIds.at(sceneBody);
+    return world()->position(id) + liveDirection(sceneBody, point - authored.position);
+}
+
+simcore::Vec3 SimulationController::liveDirection(std::size_t sceneBody, const simcore::Vec3& direction) const {
+    const simcore::Quat& authored = m_scene.bodies.at(sceneBody).body.orientation;
+    return world()->orientation(m_bodyIds.at(sceneBody)) * (glm::inverse(authored) * direction);
+}
+
 simcore::JointId SimulationController::createLiveJoint(const simcore::SceneJoint& joint) {
     simcore::World& world = m_built->world;
-    // A point given in the authored scene, carried along with body `sceneBody` to its live pose.
-    const auto follow = [&](std::size_t sceneBody, const simcore::Vec3& point) {
-        const simcore::BodyCreationSettings& authored = m_scene.bodies.at(sceneBody).body;
-        const simcore::BodyId id = m_bodyIds.at(sceneBody);
-        return world.position(id) + world.orientation(id) * (glm::inverse(authored.orientation) * (point - authored.position));
-    };
     simcore::JointCreationSettings settings = joint.joint;
     settings.bodyA = m_bodyIds.at(joint.bodyA);
     settings.bodyB = joint.bodyB ? m_bodyIds.at(*joint.bodyB) : simcore::BodyId{};
     if (!world.contains(settings.bodyA) || (joint.bodyB && !world.contains(settings.bodyB)))
         throw std::invalid_argument("a body of the joint is not in the running world");
-    settings.anchor = follow(joint.bodyA, settings.anchor);
-    settings.axis = world.orientation(settings.bodyA) * glm::inverse(m_scene.bodies[joint.bodyA].body.orientation) * settings.axis;
-    if (joint.bodyB) settings.anchorB = follow(*joint.bodyB, settings.anchorB);
+    settings.anchor = livePoint(joint.bodyA, settings.anchor);
+    settings.axis = liveDirection(joint.bodyA, settings.axis);
+    if (joint.bodyB) settings.anchorB = livePoint(*joint.bodyB, settings.anchorB);
     return world.createJoint(settings);
 }
 
@@ -238,10 +243,11 @@ void SimulationController::removeJoint(int index) {
     emit bodiesEdited();
 }
 
-bool SimulationController::changeJoint(int index, const simcore::SceneJoint& joint, QString* error) {
+bool SimulationController::changeJoint(int index, const simcore::SceneJoint& joint, JointField field, QString* error) {
     if (!m_built) return false;
     const auto i = static_cast<std::size_t>(index);
     m_scene.joints.at(i) = joint;
+    if (field == JointField::Placement) return true;
     // simcore cannot retune a joint: the old one goes, a new one is made at the bodies' live poses.
     if (m_built->world.contains(m_jointIds[i])) m_built->world.destroyJoint(m_jointIds[i]);
     m_jointIds[i] = {};
@@ -430,8 +436,8 @@ void SimulationController::followDocument(const SceneDocument* document) {
     connect(document, &SceneDocument::jointRemoved, this, [this, document](int index) {
         follow(document, [&](QString*) { removeJoint(index); return true; });
     });
-    connect(document, &SceneDocument::jointChanged, this, [this, document](int index) {
-        follow(document, [&](QString* error) { return changeJoint(index, document->joint(index), error); });
+    connect(document, &SceneDocument::jointChanged, this, [this, document](int index, JointField field) {
+        follow(document, [&](QString* error) { return changeJoint(index, document->joint(index), field, error); });
     });
     connect(document, &SceneDocument::settingsChanged, this, [this, document] {
         QString error;
@@ -465,6 +471,18 @@ QUndoCommand* SimulationController::simulatedPoseCommand(SceneDocument* document
         if (error) *error = tr("There is no simulated pose to apply.");
         return nullptr;
     }
+    QList<int> jointIndices;
+    const auto posed = [&](std::size_t body) { return indices.contains(static_cast<int>(body)); };
+    for (std::size_t j = 0; j < applied.joints.size(); ++j) {
+        simcore::SceneJoint& joint = applied.joints[j];
+        const bool movesA = posed(joint.bodyA), movesB = joint.bodyB && posed(*joint.bodyB);
+        if (movesA) {
+            joint.joint.anchor = livePoint(joint.bodyA, joint.joint.anchor);
+            joint.joint.axis = liveDirection(joint.bodyA, joint.joint.axis);
+        }
+        if (movesB) joint.joint.anchorB = livePoint(*joint.bodyB, joint.joint.anchorB);
+        if (movesA || movesB) jointIndices << static_cast<int>(j);
+    }
     // The file format's own check, so the document never holds a scene it could not reopen.
     const simcore::SceneLoadResult reloaded = simcore::parseScene(simcore::serializeScene(applied), "simulated pose");
     if (!reloaded.ok()) {
@@ -474,9 +492,19 @@ QUndoCommand* SimulationController::simulatedPoseCommand(SceneDocument* document
                                 .arg(QString::fromStdString(refusal->path), QString::fromStdString(refusal->message));
         return nullptr;
     }
-    std::vector<simcore::SceneBody> after;
-    for (int i : indices) after.push_back(applied.bodies[static_cast<std::size_t>(i)]);
-    return new ChangeBodies(document, tr("Apply Simulated Pose"), BodyField::Pose, indices, std::move(after));
+    auto* command = new QUndoCommand(tr("Apply Simulated Pose"));
+    std::vector<simcore::SceneBody> bodies;
+    for (int i : indices) bodies.push_back(applied.bodies[static_cast<std::size_t>(i)]);
+    new ChangeBodies(document, command->text(), BodyField::Pose, indices, std::move(bodies), false, command);
+    if (!jointIndices.isEmpty()) {
+        std::vector<simcore::SceneJoint> joints;
+        for (int j : jointIndices) joints.push_back(applied.joints[static_cast<std::size_t>(j)]);
+        new ChangeJoints(document, command->text(), JointField::Placement, jointIndices, std::move(joints), false, command);
+    }
+    bool unchanged = true;
+    for (int c = 0; c < command->childCount(); ++c) unchanged = unchanged && command->child(c)->isObsolete();
+    command->setObsolete(unchanged);  // applied at the authored pose: no history entry
+    return command;
 }
 
 }  // namespace interplay

@@ -104,7 +104,9 @@ public:
     bool changeBody(int index, const simcore::SceneBody& body, BodyField field, QString* error = nullptr);
     bool insertJoint(int index, const simcore::SceneJoint& joint, QString* error = nullptr);
     void removeJoint(int index);
-    bool changeJoint(int index, const simcore::SceneJoint& joint, QString* error = nullptr);
+    // A Placement change (the joint re-expressed at its bodies' new authored poses, holding the
+    // same points of them) leaves the live joint as it is.
+    bool changeJoint(int index, const simcore::SceneJoint& joint, JointField field, QString* error = nullptr);
 
     // Keeps the running world in step with `document`: each of its edits is applied in place as
     // it happens (the calls above) or, where the engine refuses that, the world is rebuilt from the
@@ -112,9 +114,12 @@ public:
     // revert) is left to the owner, who decides what to tell the user.
     void followDocument(const SceneDocument* document);
 
-    // The undoable Apply Simulated Pose: every authored body takes its live pose and velocities.
-    // Null, with *error saying why, when there is nothing to apply or the live state is one the
-    // scene file cannot hold (a speed beyond the loader's limits, a non-finite value).
+    // The undoable Apply Simulated Pose: every authored body takes its live pose and velocities,
+    // and every joint moves with its bodies (anchors and axis with body A, a distance joint's second
+    // anchor with body B), so it holds the same points of them as in the run; hinge and slider
+    // limits then count from the applied pose, as they count from any authored pose. Null, with
+    // *error saying why, when there is nothing to apply or the live state is one the scene file
+    // cannot hold (a speed beyond the loader's limits, a non-finite value).
     QUndoCommand* simulatedPoseCommand(SceneDocument* document, QString* error) const;
 
     // Adds a body to the running world only (not to the document); Reset removes it again.
@@ -171,6 +176,10 @@ private:
     void follow(const SceneDocument* document, const std::function<bool(QString* error)>& edit);
     // Creates scene joint `index` at its bodies' live poses.
     simcore::JointId createLiveJoint(const simcore::SceneJoint& joint);
+    // A point (direction) given in the authored scene, carried along with scene body `sceneBody`
+    // from its authored pose to its live one.
+    simcore::Vec3 livePoint(std::size_t sceneBody, const simcore::Vec3& point) const;
+    simcore::Vec3 liveDirection(std::size_t sceneBody, const simcore::Vec3& direction) const;
     // Replaces scene body `index` by a new world body with the authored settings and the live state.
     void recreateBody(int index);
 
