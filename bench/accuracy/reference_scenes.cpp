@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <utility>
 
 namespace accuracy {
 
@@ -33,8 +34,22 @@ namespace {
 constexpr double kG = 9.81;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-int stepCount(const WorldSettings& settings, double seconds) {
-    return static_cast<int>(std::lround(seconds / static_cast<double>(settings.timeStep)));
+// Steps `world` through `seconds` of simulated time; `afterStep` (the scene's own measuring, not
+// timed) sees the world after each step.
+template <typename AfterStep>
+void stepFor(World& world, double seconds, SteppingTimer& timer, AfterStep afterStep) {
+    const int steps = static_cast<int>(std::lround(seconds / static_cast<double>(world.settings().timeStep)));
+    for (int i = 0; i < steps; ++i) {
+        timer.step(world);
+        afterStep();
+    }
+}
+void stepFor(World& world, double seconds, SteppingTimer& timer) {
+    stepFor(world, seconds, timer, [] {});
+}
+
+Observation observation(const World& world, std::vector<double> values) {
+    return {std::move(values), !world.findNonFiniteBody()};
 }
 
 // Static ground: a box whose top face is y = 0.
@@ -64,13 +79,12 @@ WorldSettings zeroGravity() {
 
 // Centres of mass of the given bodies, x y z each, as an observation to compare with a converged run.
 Observation centres(const World& world, const std::vector<BodyId>& bodies) {
-    Observation o;
+    std::vector<double> values;
     for (BodyId id : bodies) {
         const Vec3 c = world.centerOfMass(id);
-        o.values.insert(o.values.end(), {c.x, c.y, c.z});
+        values.insert(values.end(), {c.x, c.y, c.z});
     }
-    o.finite = !world.findNonFiniteBody();
-    return o;
+    return observation(world, std::move(values));
 }
 
 // Largest distance (m) of any body's centre from where the converged run has it.
@@ -98,11 +112,8 @@ Observation runIncline(const WorldSettings& settings, double seconds, SteppingTi
     World world(settings);
     const test_support::Incline incline(world, shape, offsetAlongNormal, friction);
     const Vec3 start = world.centerOfMass(incline.body);
-    for (int i = 0, n = stepCount(settings, seconds); i < n; ++i) timer.step(world);
-    Observation o;
-    o.values = {glm::dot(world.centerOfMass(incline.body) - start, incline.downSlope), world.simulatedTime()};
-    o.finite = !world.findNonFiniteBody();
-    return o;
+    stepFor(world, seconds, timer);
+    return observation(world, {glm::dot(world.centerOfMass(incline.body) - start, incline.downSlope), world.simulatedTime()});
 }
 
 double relativeDistanceError(const Observation& o, double acceleration) {
@@ -196,19 +207,15 @@ ReferenceScene pendulum() {
         world.createJoint(j);
         std::vector<double> crossings;
         double previousTime = 0.0, previousX = static_cast<double>(start.x);
-        for (int i = 0, n = stepCount(settings, seconds); i < n; ++i) {
-            timer.step(world);
+        stepFor(world, seconds, timer, [&] {
             const double t = world.simulatedTime(), x = world.centerOfMass(bob).x;
             if (previousX < 0.0 && x >= 0.0) crossings.push_back(previousTime + (t - previousTime) * -previousX / (x - previousX));
             previousTime = t;
             previousX = x;
-        }
-        Observation o;
+        });
         const double period = crossings.size() < 2 ? kInfinity
                                                    : (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1);
-        o.values = {period};
-        o.finite = !world.findNonFiniteBody();
-        return o;
+        return observation(world, {period});
     };
     s.error = [](const Observation& o, const Observation*) {
         const double exact = exactPendulumPeriod();
@@ -250,11 +257,8 @@ ReferenceScene elasticCollision() {
         };
         const BodyId a = sphere(-1.0f, kMassA, kSpeedA);
         const BodyId b = sphere(1.0f, kMassB, kSpeedB);
-        for (int i = 0, n = stepCount(settings, seconds); i < n; ++i) timer.step(world);
-        Observation o;
-        o.values = {world.linearVelocity(a).x, world.linearVelocity(b).x};
-        o.finite = !world.findNonFiniteBody();
-        return o;
+        stepFor(world, seconds, timer);
+        return observation(world, {world.linearVelocity(a).x, world.linearVelocity(b).x});
     };
     s.error = [](const Observation& o, const Observation*) {
         const double total = kMassA + kMassB;
@@ -294,15 +298,11 @@ ReferenceScene tumbling() {
         const Vec3 l0 = world.angularMomentum();
         const double e0 = world.kineticEnergy();
         double worst = 0.0;
-        for (int i = 0, n = stepCount(settings, seconds); i < n; ++i) {
-            timer.step(world);
+        stepFor(world, seconds, timer, [&] {
             const double drift = glm::length(world.angularMomentum() - l0) / glm::length(l0);
             worst = std::max({worst, drift, std::abs(world.kineticEnergy() / e0 - 1.0)});
-        }
-        Observation o;
-        o.values = {worst};
-        o.finite = !world.findNonFiniteBody();
-        return o;
+        });
+        return observation(world, {worst});
     };
     s.error = [](const Observation& o, const Observation*) { return o.values[0]; };
     return s;
@@ -310,85 +310,70 @@ ReferenceScene tumbling() {
 
 // ---- hard scenes, against a converged run
 
-ReferenceScene tower() {
+// Unit cubes (friction 0.5) standing on a static ground, compared with a converged run on where
+// every cube's centre ends up. `cubes` gives each cube's centre and mass.
+ReferenceScene standingCubes(std::vector<std::pair<Vec3, float>> cubes) {
     ReferenceScene s;
+    s.metric = "largest distance (m) of any cube's centre at the end from where the converged run has it";
+    s.errorAxis = "largest distance from the converged run (m)";
+    s.reference = ReferenceKind::ConvergedRun;
+    s.toggles = {Effect::Sleeping};
+    s.run = [cubes = std::move(cubes)](const WorldSettings& settings, double seconds, SteppingTimer& timer) {
+        World world(settings);
+        addGround(world, 20.0f);
+        std::vector<BodyId> ids;
+        for (const auto& [centre, mass] : cubes) ids.push_back(world.createBody(unitCube(centre, mass)));
+        stepFor(world, seconds, timer);
+        return centres(world, ids);
+    };
+    s.error = largestCentreDistance;
+    return s;
+}
+
+ReferenceScene tower() {
+    std::vector<std::pair<Vec3, float>> cubes;
+    for (int i = 0; i < 16; ++i) cubes.emplace_back(Vec3(0.0f, 0.5f + static_cast<float>(i), 0.0f), 1.0f);
+    ReferenceScene s = standingCubes(std::move(cubes));
     s.name = "tower-drift";
     s.title = "Tower of 16 cubes: drift";
     s.setup = "16 unit cubes (1 kg, friction 0.5) stacked exactly on a static ground, left to stand for 4 s.";
-    s.metric = "largest distance (m) of any cube's centre at the end from where the converged run has it";
-    s.errorAxis = "largest distance from the converged run (m)";
     s.answer = "every cube's centre of mass at t = 4 s";
-    s.reference = ReferenceKind::ConvergedRun;
-    s.toggles = {Effect::Sleeping};
     s.seconds = 4.0;
     s.quickSeconds = 2.0;
-    s.run = [](const WorldSettings& settings, double seconds, SteppingTimer& timer) {
-        World world(settings);
-        addGround(world, 20.0f);
-        std::vector<BodyId> cubes;
-        for (int i = 0; i < 16; ++i) cubes.push_back(world.createBody(unitCube(Vec3(0.0f, 0.5f + static_cast<float>(i), 0.0f), 1.0f)));
-        for (int i = 0, n = stepCount(settings, seconds); i < n; ++i) timer.step(world);
-        return centres(world, cubes);
-    };
-    s.error = largestCentreDistance;
     return s;
 }
 
 ReferenceScene pyramid() {
-    ReferenceScene s;
+    std::vector<std::pair<Vec3, float>> cubes;
+    constexpr int kBase = 5;
+    for (int layer = 0; layer < kBase; ++layer) {
+        const int side = kBase - layer;
+        const float offset = -0.5f * static_cast<float>(side - 1);
+        for (int z = 0; z < side; ++z)
+            for (int x = 0; x < side; ++x)
+                cubes.emplace_back(Vec3(offset + static_cast<float>(x), 0.5f + static_cast<float>(layer), offset + static_cast<float>(z)), 1.0f);
+    }
+    ReferenceScene s = standingCubes(std::move(cubes));
     s.name = "pyramid-drift";
     s.title = "Pyramid of 55 cubes: drift";
     s.setup = "A square pyramid of unit cubes (1 kg, friction 0.5), 5 × 5 at the base, 5 layers, 55 cubes, each "
               "layer centred on the one below, left to stand for 3 s.";
-    s.metric = "largest distance (m) of any cube's centre at the end from where the converged run has it";
-    s.errorAxis = "largest distance from the converged run (m)";
     s.answer = "every cube's centre of mass at t = 3 s";
-    s.reference = ReferenceKind::ConvergedRun;
-    s.toggles = {Effect::Sleeping};
     s.seconds = 3.0;
     s.quickSeconds = 1.0;
-    s.run = [](const WorldSettings& settings, double seconds, SteppingTimer& timer) {
-        World world(settings);
-        addGround(world, 20.0f);
-        std::vector<BodyId> cubes;
-        constexpr int kBase = 5;
-        for (int layer = 0; layer < kBase; ++layer) {
-            const int side = kBase - layer;
-            const float offset = -0.5f * static_cast<float>(side - 1);
-            for (int z = 0; z < side; ++z)
-                for (int x = 0; x < side; ++x)
-                    cubes.push_back(world.createBody(unitCube(
-                        Vec3(offset + static_cast<float>(x), 0.5f + static_cast<float>(layer), offset + static_cast<float>(z)), 1.0f)));
-        }
-        for (int i = 0, n = stepCount(settings, seconds); i < n; ++i) timer.step(world);
-        return centres(world, cubes);
-    };
-    s.error = largestCentreDistance;
     return s;
 }
 
 ReferenceScene massRatioStack() {
-    ReferenceScene s;
+    ReferenceScene s = standingCubes({{Vec3(0.0f, 0.5f, 0.0f), 1.0f}, {Vec3(0.0f, 1.5f, 0.0f), 100.0f}});
     s.name = "mass-ratio-sink";
     s.title = "100:1 mass ratio stack: sink";
     s.setup = "A 100 kg unit cube resting on a 1 kg unit cube on a static ground (friction 0.5), 3 s.";
     s.metric = "largest distance (m) of either cube's centre at the end from where the converged run has it "
                "(mostly how far the heavy cube has sunk into the light one)";
-    s.errorAxis = "largest distance from the converged run (m)";
     s.answer = "both centres of mass at t = 3 s";
-    s.reference = ReferenceKind::ConvergedRun;
-    s.toggles = {Effect::Sleeping};
     s.seconds = 3.0;
     s.quickSeconds = 1.0;
-    s.run = [](const WorldSettings& settings, double seconds, SteppingTimer& timer) {
-        World world(settings);
-        addGround(world, 20.0f);
-        const std::vector<BodyId> cubes{world.createBody(unitCube(Vec3(0.0f, 0.5f, 0.0f), 1.0f)),
-                                        world.createBody(unitCube(Vec3(0.0f, 1.5f, 0.0f), 100.0f))};
-        for (int i = 0, n = stepCount(settings, seconds); i < n; ++i) timer.step(world);
-        return centres(world, cubes);
-    };
-    s.error = largestCentreDistance;
     return s;
 }
 
@@ -427,14 +412,8 @@ ReferenceScene chain() {
             previous = link;
         }
         double worst = 0.0;
-        for (int i = 0, n = stepCount(settings, seconds); i < n; ++i) {
-            timer.step(world);
-            worst = std::max(worst, static_cast<double>(world.worstJointError().position));
-        }
-        Observation o;
-        o.values = {worst};
-        o.finite = !world.findNonFiniteBody();
-        return o;
+        stepFor(world, seconds, timer, [&] { worst = std::max(worst, static_cast<double>(world.worstJointError().position)); });
+        return observation(world, {worst});
     };
     s.error = [](const Observation& o, const Observation*) { return o.values[0]; };
     return s;
@@ -462,14 +441,8 @@ ReferenceScene pile() {
                                       1.0f));
         }
         double worst = 0.0;
-        for (int i = 0, n = stepCount(settings, seconds); i < n; ++i) {
-            timer.step(world);
-            worst = std::max(worst, static_cast<double>(world.lastStepProfile().maxPenetration));
-        }
-        Observation o;
-        o.values = {worst};
-        o.finite = !world.findNonFiniteBody();
-        return o;
+        stepFor(world, seconds, timer, [&] { worst = std::max(worst, static_cast<double>(world.lastStepProfile().maxPenetration)); });
+        return observation(world, {worst});
     };
     s.error = [](const Observation& o, const Observation*) { return o.values[0]; };
     return s;
