@@ -4,9 +4,9 @@
 // save; clicking a body's pixel selects it and dragging moves it as one undo entry (in place, even
 // among a thousand bodies); Play, Step and Reset leave the authored scene as it was; edits while a
 // run is paused reach the running world without disturbing the other bodies; joints are added
-// from the selection, selected in the tree, drawn highlighted and deleted with their bodies; the
-// toolbar's edit actions; the QML settings panel loads and its controls change the running world;
-// every demo scene renders.
+// from the selection, selected in the tree or by clicking near their anchors in the viewport, drawn
+// highlighted and deleted with their bodies; the toolbar's edit actions; the QML settings panel
+// loads and its controls change the running world; every demo scene renders.
 
 #include "app/document/scene_document.h"
 #include "app/document/scene_tree_model.h"
@@ -169,6 +169,7 @@ private slots:
     void addJointActionsFollowTheSelection();
     void deletingABodyTakesItsJointsInOneStep();
     void jointsAreSelectedInTheTreeAndDrawnHighlighted();
+    void clickingAJointSelectsIt();
 
     void overlaysAndSleepingTintAreDrawn();
     void qmlPanelLoadsAndChangesTheWorld();
@@ -909,6 +910,92 @@ void TestMainWindow::jointsAreSelectedInTheTreeAndDrawnHighlighted() {
     QCOMPARE(rows.size(), 1);
     QCOMPARE(model->jointIndexOf(rows.first()), 0);
     QCOMPARE(document->undoStack()->count(), 1);
+}
+
+void TestMainWindow::clickingAJointSelectsIt() {
+    interplay::SceneDocument* document = m_window->document();
+    interplay::Viewport* viewport = m_window->viewport();
+    QTreeView* tree = m_window->sceneTree();
+    interplay::SceneTreeModel* model = m_window->sceneTreeModel();
+    document->setSelectedBodies({1, 2});
+    m_window->action("addHingeJoint")->trigger();  // anchored midway between the two bodies
+    document->setSelectedBodies({4});
+    m_window->action("addDistanceJoint")->trigger();  // hangs the cylinder from a point above it
+    document->setSelection({}, {});
+    const int entries = document->undoStack()->count();
+
+    // The hinge's anchor is drawn over the floor: the joint wins the click over the body behind it.
+    const QPoint hinge = pixelOf(*viewport, document->joint(0).joint.anchor);
+    QCOMPARE(viewport->sceneBodyAt(hinge), 0);
+    QTest::mouseClick(viewport, Qt::LeftButton, {}, hinge);
+    QCOMPARE(document->selectedJoints(), QList<int>{0});
+    QVERIFY(document->selectedBodies().isEmpty());
+    // As a selection made in the tree: the tree shows the joint's row, the Inspector its form.
+    const QModelIndexList rows = tree->selectionModel()->selectedRows();
+    QCOMPARE(rows.size(), 1);
+    QCOMPARE(model->jointIndexOf(rows.first()), 0);
+    QVERIFY(m_window->inspector()->jointNameField()->isVisibleTo(m_window->inspector()));
+    QCOMPARE(m_window->inspector()->jointNameField()->text(), document->jointName(0));
+
+    // A body away from the joints is picked as before.
+    const QPoint sphere = pixelOf(*viewport, bodyCenter(*document, 2));
+    QVERIFY(!viewport->pickJoint(sphere));
+    QTest::mouseClick(viewport, Qt::LeftButton, {}, sphere);
+    QCOMPARE(document->selectedBodies(), QList<int>{2});
+    QVERIFY(document->selectedJoints().isEmpty());
+
+    // A few pixels off the anchor still picks the joint (a dozen do not); Ctrl-click adds the
+    // distance joint, picked on its rod between the anchors, and Shift-click takes the hinge out.
+    QVERIFY(!viewport->pickJoint(hinge + QPoint(12, 0)));
+    QTest::mouseClick(viewport, Qt::LeftButton, {}, hinge + QPoint(5, -4));
+    QCOMPARE(document->selectedJoints(), QList<int>{0});
+    const simcore::JointCreationSettings& rod = document->joint(1).joint;
+    const QPoint alongRod = pixelOf(*viewport, glm::mix(rod.anchor, rod.anchorB, 0.75f));
+    QTest::mouseClick(viewport, Qt::LeftButton, Qt::ControlModifier, alongRod);
+    QCOMPARE(document->selectedJoints(), (QList<int>{0, 1}));
+    QTest::mouseClick(viewport, Qt::LeftButton, Qt::ShiftModifier, hinge);
+    QCOMPARE(document->selectedJoints(), QList<int>{1});
+
+    // Dragging from a joint turns the camera; it moves no body.
+    const std::string authored = sceneText(document->scene());
+    const glm::vec3 eye = viewport->camera().eye();
+    QTest::mousePress(viewport, Qt::LeftButton, {}, hinge);
+    for (int i = 1; i <= 5; ++i) QTest::mouseMove(viewport, hinge + QPoint(8 * i, 0));
+    QTest::mouseRelease(viewport, Qt::LeftButton, {}, hinge + QPoint(40, 0));
+    QVERIFY(glm::length(viewport->camera().eye() - eye) > 1e-3f);
+    QCOMPARE(sceneText(document->scene()), authored);
+    QCOMPARE(document->selectedJoints(), QList<int>{1});  // a drag is no click
+
+    // The sky, far from every joint and body: the selection clears.
+    const QPoint sky(viewport->width() / 2, 3);
+    QVERIFY(!viewport->pickJoint(sky));
+    QCOMPARE(viewport->sceneBodyAt(sky), -1);
+    QTest::mouseClick(viewport, Qt::LeftButton, {}, sky);
+    QVERIFY(document->selectedJoints().isEmpty());
+    QVERIFY(document->selectedBodies().isEmpty());
+    QCOMPARE(document->undoStack()->count(), entries);
+
+    // A joint to the world is anchored at its body's origin, inside the body: the body keeps the
+    // click there (and can still be dragged from its centre), and a click on it once it is selected
+    // picks the joint; the next click goes back to the body.
+    document->setSelectedBodies({3});
+    m_window->action("addBallJoint")->trigger();
+    const int ball = document->jointCount() - 1;
+    const QPoint centre = pixelOf(*viewport, document->joint(ball).joint.anchor);
+    QVERIFY(viewport->pickJoint(centre));
+    document->setSelection({}, {});
+    QTest::mouseClick(viewport, Qt::LeftButton, {}, centre);
+    QCOMPARE(document->selectedBodies(), QList<int>{3});
+    QTest::mouseClick(viewport, Qt::LeftButton, {}, centre);
+    QCOMPARE(document->selectedJoints(), QList<int>{ball});
+    QVERIFY(document->selectedBodies().isEmpty());
+    QTest::mouseClick(viewport, Qt::LeftButton, {}, centre);
+    QCOMPARE(document->selectedBodies(), QList<int>{3});
+    const simcore::Vec3 before = document->body(3).body.position;
+    QTest::mousePress(viewport, Qt::LeftButton, {}, centre);
+    for (int i = 1; i <= 5; ++i) QTest::mouseMove(viewport, centre + QPoint(8 * i, 0));
+    QTest::mouseRelease(viewport, Qt::LeftButton, {}, centre + QPoint(40, 0));
+    QVERIFY(glm::length(document->body(3).body.position - before) > 0.05f);
 }
 
 void TestMainWindow::overlaysAndSleepingTintAreDrawn() {

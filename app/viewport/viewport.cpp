@@ -67,6 +67,9 @@ constexpr float kContactNormalLength = 0.3f;  // m
 constexpr float kContactMarkSize = 0.05f;     // m, half-size of the cross marking a contact point
 constexpr float kJointMarkSize = 0.12f;       // m, half-size of the cross marking a selected joint's anchor
 constexpr float kJointAxisLength = 0.6f;      // m, either way along a selected hinge or slider axis
+// How near a click must come to a joint's anchors to pick the joint, in widget pixels (device
+// independent, as mouse positions are, so the reach is the same on a high-DPI screen).
+constexpr float kJointPickPixels = 8.0f;
 
 // Fly speed in m/s per metre of camera distance, so flying suits a scene of any size; Shift boosts.
 constexpr float kFlySpeedPerMetre = 0.6f;
@@ -392,6 +395,34 @@ std::optional<simcore::WorldRayHit> Viewport::pick(const QPointF& pixel) const {
 int Viewport::sceneBodyAt(const QPointF& pixel) const {
     const auto hit = pick(pixel);
     return hit ? m_simulation->sceneIndexOf(hit->body) : -1;
+}
+
+std::optional<Viewport::JointPick> Viewport::pickJoint(const QPointF& pixel) const {
+    if (!m_simulation || !m_simulation->world()) return std::nullopt;
+    const float w = static_cast<float>(width()), h = static_cast<float>(height());
+    const glm::vec2 cursor(static_cast<float>(pixel.x()), static_cast<float>(pixel.y()));
+    std::optional<JointPick> nearest;
+    float nearestPixels = kJointPickPixels;
+    const std::size_t jointCount = m_simulation->authoredScene().joints.size();
+    for (std::size_t j = 0; j < jointCount; ++j) {
+        const auto anchors = jointAnchors(j);
+        if (!anchors) continue;
+        // Perspective keeps a segment straight on screen, so its projection is where it is drawn;
+        // one reaching behind the eye has no such projection and is skipped.
+        const glm::vec3 a = m_camera.project(anchors->onA, w, h), b = m_camera.project(anchors->onB, w, h);
+        if (a.z > 1.0f || b.z > 1.0f) continue;
+        const glm::vec2 from(a), along = glm::vec2(b) - from;
+        const float lengthSquared = glm::dot(along, along);  // zero where the anchors meet
+        const float t =
+            lengthSquared > 0.0f ? std::clamp(glm::dot(cursor - from, along) / lengthSquared, 0.0f, 1.0f) : 0.0f;
+        const float pixels = glm::length(cursor - (from + t * along));
+        if (pixels <= nearestPixels) {
+            const glm::vec3 point = glm::mix(anchors->onA, anchors->onB, t);  // near enough under perspective
+            nearest = JointPick{static_cast<int>(j), glm::length(point - m_camera.eye())};
+            nearestPixels = pixels;
+        }
+    }
+    return nearest;
 }
 
 glm::vec3 Viewport::placementPoint(float bodyHalfHeight) const {
@@ -782,21 +813,30 @@ std::vector<Viewport::OverlayVertex> Viewport::overlayLines() const {
             joint.joint.type == simcore::JointType::Distance ? joint.joint.anchorB : joint.joint.anchor;
         const auto b = joint.bodyB ? centreOf(*joint.bodyB) : std::optional<glm::vec3>(fixedPoint);
         if (a && b) addLine(*a, *b, color);
-        const auto& jointIds = m_simulation->jointIds();
-        if (!selected || j >= jointIds.size() || !world->contains(jointIds[j])) continue;
-        const simcore::JointStorage& storage = world->joints();
-        const simcore::Joint& live = storage.joints[static_cast<std::size_t>(storage.denseIndex(jointIds[j]))];
-        const simcore::JointGeometry geometry = simcore::jointGeometry(live, storage.poseOf(live.bodyA, world->bodies()),
-                                                                       storage.poseOf(live.bodyB, world->bodies()));
-        const glm::vec3 anchorA = world->centerOfMass(live.bodyA) + geometry.armA;
-        addCross(anchorA, kJointMarkSize, color);
-        addCross(anchorA + geometry.separation, kJointMarkSize, color);
-        if (live.type == simcore::JointType::Hinge || live.type == simcore::JointType::Slider) {
-            addLine(anchorA - geometry.axisA * kJointAxisLength, anchorA + geometry.axisA * kJointAxisLength, color);
+        if (!selected) continue;
+        const auto anchors = jointAnchors(j);
+        if (!anchors) continue;
+        addCross(anchors->onA, kJointMarkSize, color);
+        addCross(anchors->onB, kJointMarkSize, color);
+        if (joint.joint.type == simcore::JointType::Hinge || joint.joint.type == simcore::JointType::Slider) {
+            addLine(anchors->onA - anchors->axis * kJointAxisLength, anchors->onA + anchors->axis * kJointAxisLength,
+                    color);
         }
     }
     if (const auto grab = m_simulation->grabLine()) addLine(grab->first, grab->second, srgb(kGrabColor));
     return lines;
+}
+
+std::optional<Viewport::JointAnchors> Viewport::jointAnchors(std::size_t sceneIndex) const {
+    const simcore::World* world = m_simulation->world();
+    const auto& jointIds = m_simulation->jointIds();
+    if (sceneIndex >= jointIds.size() || !world->contains(jointIds[sceneIndex])) return std::nullopt;
+    const simcore::JointStorage& storage = world->joints();
+    const simcore::Joint& live = storage.joints[static_cast<std::size_t>(storage.denseIndex(jointIds[sceneIndex]))];
+    const simcore::JointGeometry geometry = simcore::jointGeometry(live, storage.poseOf(live.bodyA, world->bodies()),
+                                                                   storage.poseOf(live.bodyB, world->bodies()));
+    const glm::vec3 onA = world->centerOfMass(live.bodyA) + geometry.armA;
+    return JointAnchors{onA, onA + geometry.separation, geometry.axisA};
 }
 
 void Viewport::drawOverlays(const glm::mat4& viewProjection) {
@@ -940,6 +980,8 @@ void Viewport::mousePressEvent(QMouseEvent* event) {
     m_pressModifiers = event->modifiers();
     m_dragMoved = false;
     m_clickedBody = -1;
+    m_clickedJoint = -1;
+    m_jointInPressedBody = -1;
     if (event->button() == Qt::RightButton) {
         m_drag = Drag::Fly;
         m_flyClock.start();
@@ -947,8 +989,19 @@ void Viewport::mousePressEvent(QMouseEvent* event) {
     } else if (event->button() == Qt::MiddleButton) {
         m_drag = Drag::Pan;
     } else if (event->button() == Qt::LeftButton) {
-        const auto hit = pick(event->position());
+        // Joint marks are drawn over the bodies, so a joint near the cursor takes the click (it is
+        // selected on release, and a drag from it moves the camera, never a body), unless its point
+        // lies inside or behind the body under the cursor, as a joint anchored at a body's centre
+        // does: then the body takes the press, to be dragged, and a click on it once it is selected
+        // reaches the joint.
+        auto hit = pick(event->position());
+        if (const auto joint = pickJoint(event->position())) {
+            if (hit && hit->fraction < joint->distance) m_jointInPressedBody = joint->joint;
+            else m_clickedJoint = joint->joint;
+        }
+        if (m_clickedJoint >= 0) hit.reset();
         const int sceneIndex = hit ? m_simulation->sceneIndexOf(hit->body) : -1;
+        m_pressedBodyWasSelected = m_document && sceneIndex >= 0 && m_document->selectedBodies().contains(sceneIndex);
         if (hit && (sceneIndex >= 0 || m_simulation->isPlaying())) {
             pressOnBody(event, *hit, sceneIndex);
         } else {
@@ -1062,16 +1115,25 @@ void Viewport::mouseReleaseEvent(QMouseEvent* event) {
         m_flyTimer.stop();
         m_flyKeys.clear();
     }
-    // A click (no drag): Ctrl/Shift toggles the body in the selection; a plain click on nothing
-    // clears it. Camera gestures that moved select nothing.
+    // A click (no drag): Ctrl/Shift toggles the joint or body in the selection; a plain click
+    // selects just it, or on nothing clears the selection. Camera gestures that moved select nothing.
     if (!m_dragMoved && m_document && event->button() == Qt::LeftButton) {
         const bool extend = m_pressModifiers & (Qt::ControlModifier | Qt::ShiftModifier);
-        QList<int> selection = m_document->selectedBodies();
-        if (extend && m_clickedBody >= 0) {
-            if (!selection.removeOne(m_clickedBody)) selection << m_clickedBody;
-            m_document->setSelection(selection, m_document->selectedJoints());
+        const auto toggle = [](QList<int> indices, int index) {
+            if (!indices.removeOne(index)) indices << index;
+            return indices;
+        };
+        if (extend && m_clickedJoint >= 0) {
+            m_document->setSelection(m_document->selectedBodies(),
+                                     toggle(m_document->selectedJoints(), m_clickedJoint));
+        } else if (extend && m_clickedBody >= 0) {
+            m_document->setSelection(toggle(m_document->selectedBodies(), m_clickedBody), m_document->selectedJoints());
+        } else if (!extend && m_clickedJoint >= 0) {
+            m_document->setSelectedJoints({m_clickedJoint});
         } else if (!extend && m_clickedBody < 0) {
             m_document->setSelectedBodies({});
+        } else if (!extend && m_jointInPressedBody >= 0 && m_pressedBodyWasSelected) {
+            m_document->setSelectedJoints({m_jointInPressedBody});
         } else if (!extend) {
             m_document->setSelectedBodies({m_clickedBody});
         }

@@ -3,7 +3,8 @@
 // seen through an orbit camera (with a fly mode on the right mouse button and WASD). Draws the
 // document's selection outlined (selected joints in the selection colour, anchors and axis
 // marked), sleeping bodies tinted and the debug overlays (bounds, contact points and normals). Mouse interaction:
-//   left click            select the body under the cursor (ray cast through simcore);
+//   left click            select the joint whose anchor (or distance rod) is within a few
+//                         pixels, else the body under the cursor (ray cast through simcore);
 //                         Ctrl/Shift-click adds or removes it; a click on nothing clears
 //   left drag on a body   paused: move the selection on a horizontal plane (one undo entry);
 //                         with Alt: turn it about the vertical; playing: pull it with a spring
@@ -68,6 +69,14 @@ public:
     std::optional<simcore::WorldRayHit> pick(const QPointF& pixel) const;
     // The scene body under a pixel, or -1 (nothing, or a body thrown in while running).
     int sceneBodyAt(const QPointF& pixel) const;
+    // The scene joint whose live anchors, or the segment between them (a distance joint's rod),
+    // pass nearest to a widget pixel, if within a few pixels, and how far from the eye that point
+    // of it is (m).
+    struct JointPick {
+        int joint = -1;
+        float distance = 0.0f;
+    };
+    std::optional<JointPick> pickJoint(const QPointF& pixel) const;
     // Where a new body of this size could go: the ground point under the view's centre, raised so
     // the body clears the bodies already there (m).
     glm::vec3 placementPoint(float bodyHalfHeight) const;
@@ -125,6 +134,12 @@ private:
         glm::vec3 position;
         glm::vec3 color;  // linear RGB
     };
+    // Where a joint of the running world holds its bodies now (m): its point on body A, its point
+    // on body B (apart for a distance joint, a sliding slider or a strained joint) and its axis.
+    struct JointAnchors {
+        glm::vec3 onA, onB;
+        glm::vec3 axis;  // unit; a hinge's or slider's, on body A
+    };
 
     // Mouse gesture in progress.
     enum class Drag { None, Orbit, Pan, Fly, MoveBodies, RotateBodies, Grab };
@@ -139,6 +154,8 @@ private:
     void drawSelectionOutline(const glm::mat4& viewProjection);
     void drawOverlays(const glm::mat4& viewProjection);
     std::vector<OverlayVertex> overlayLines() const;
+    // Scene joint `sceneIndex` as the running world holds it; none if it is not in the world.
+    std::optional<JointAnchors> jointAnchors(std::size_t sceneIndex) const;
     // Light-space box around the bodies worth shadowing.
     glm::mat4 lightViewProjection() const;
 
@@ -175,6 +192,9 @@ private:
     QPoint m_pressMouse;
     bool m_dragMoved = false;           // the mouse travelled since the press (not a click)
     int m_clickedBody = -1;             // scene body under the press, for click-to-select on release
+    int m_clickedJoint = -1;            // scene joint under the press (takes the click from bodies)
+    int m_jointInPressedBody = -1;      // a joint under the press whose point the pressed body hides
+    bool m_pressedBodyWasSelected = false;
     Qt::KeyboardModifiers m_pressModifiers;
     float m_dragPlaneHeight = 0.0f;     // y of the horizontal plane bodies move on (m)
     glm::vec3 m_dragStart{0.0f};        // where the drag plane was first hit (m)
