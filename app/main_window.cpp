@@ -154,6 +154,8 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_simulation, &SimulationController::worldRebuilt, this, &MainWindow::updateStatus);
     connect(m_simulation, &SimulationController::bodiesEdited, this, &MainWindow::updateStatus);
     connect(m_simulation, &SimulationController::simulationError, this, &MainWindow::showSimulationError);
+    connect(m_simulation, &SimulationController::simulationWarning, this,
+            [this](const QString& message) { statusBar()->showMessage(message, 15000); });
     connect(m_watcher, &QFileSystemWatcher::fileChanged, this, &MainWindow::documentFileChanged);
 
     connect(m_autosaveTimer, &QTimer::timeout, this, &MainWindow::autosaveNow);

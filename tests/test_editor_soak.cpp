@@ -753,6 +753,7 @@ private slots:
     void duplicateNameOfAJointedBodyIsRefused();
     void simulatedPoseOutsideTheFileLimits();
     void simulatedPoseCarriesJoints();
+    void runAtTheSpeedBoundIsReported();
     void oversizedFileIsRefusedUnread();
 };
 
@@ -884,6 +885,36 @@ void TestEditorSoak::simulatedPoseCarriesJoints() {
     QVERIFY(interplay::sameSceneJoint(session.document.joint(0), authored));
     QCOMPARE(session.document.undoStack()->undoText(), QString());
     QVERIFY(session.editErrors.isEmpty());
+}
+
+void TestEditorSoak::runAtTheSpeedBoundIsReported() {
+    // A run whose bodies reach the engine's velocity bound is no longer physical, and the editor
+    // says so once per run (a status-bar message in the window): a 1 m rope between an 18 kg box
+    // and a 1400 kg ball 1 km away flings the box at the bound within a few steps. Reset starts a
+    // new run, which is reported again; a calm run is not reported.
+    test_support::EditorSession session;
+    const SceneLoadResult torn = parseScene(R"({"format": "interplay.scene", "version": 1,
+        "bodies": [
+          {"name": "light", "shape": {"type": "box", "halfExtents": [0.36, 0.25, 0.063]}, "mass": 18, "position": [0, 5, 0]},
+          {"name": "heavy", "shape": {"type": "sphere", "radius": 0.61}, "mass": 1400, "position": [0, 5, 1000]}],
+        "joints": [{"type": "distance", "bodyA": "light", "bodyB": "heavy", "anchor": [8, 5, 0],
+                    "anchorB": [0, 5, 1000], "minLength": 0, "maxLength": 1}]})", "torn");
+    QVERIFY(torn.ok());
+    session.document.restoreRecovered(*torn.scene, QString());
+    session.simulation.stepFrames(60);
+    QCOMPARE(session.simulationWarnings.size(), 1);
+    QVERIFY2(session.simulationWarnings[0].contains(QStringLiteral("speed limit")), qPrintable(session.simulationWarnings[0]));
+    session.simulation.stepFrames(60);
+    QCOMPARE(session.simulationWarnings.size(), 1);
+    session.simulation.reset();
+    session.simulation.stepFrames(60);
+    QCOMPARE(session.simulationWarnings.size(), 2);
+    QVERIFY(session.simulationErrors.isEmpty());
+
+    test_support::EditorSession calm;
+    calm.document.newDefault();
+    calm.simulation.stepFrames(240);
+    QVERIFY(calm.simulationWarnings.isEmpty());
 }
 
 void TestEditorSoak::oversizedFileIsRefusedUnread() {

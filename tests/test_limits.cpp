@@ -263,6 +263,33 @@ private slots:
         QCOMPARE(report["steps"].get<int>(), 1000);
     }
 
+    // A run that reaches the velocity bound says so: a rope (distance joint, at most 1 m) between an
+    // 18 kg box and a 1400 kg ball 1 km away flings the box at the bound, and the runner counts the
+    // cut velocities in metrics.boundedVelocities and warns on stderr. A demo with joints that
+    // behaves reports 0 and no warning.
+    void boundedVelocitiesAreReported() {
+        const QString path = dir_.filePath("torn.json");
+        writeFile(path, R"({"format": "interplay.scene", "version": 1,
+            "bodies": [
+              {"name": "light", "shape": {"type": "box", "halfExtents": [0.36, 0.25, 0.063]}, "mass": 18, "position": [0, 5, 0]},
+              {"name": "heavy", "shape": {"type": "sphere", "radius": 0.61}, "mass": 1400, "position": [0, 5, 1000]}],
+            "joints": [{"type": "distance", "bodyA": "light", "bodyB": "heavy", "anchor": [8, 5, 0],
+                        "anchorB": [0, 5, 1000], "minLength": 0, "maxLength": 1}]})");
+        const Measured torn = runMeasured(dir_, {path, "--steps", "300"});
+        QVERIFY2(torn.exitCode == 0, torn.err.c_str());
+        const nlohmann::json report = nlohmann::json::parse(torn.out);
+        const auto bounded = report["metrics"]["boundedVelocities"].get<std::uint64_t>();
+        qInfo("torn rope: %llu velocities cut to the bound in 300 steps", static_cast<unsigned long long>(bounded));
+        QVERIFY(bounded > 0);
+        QVERIFY2(torn.err.find("torn.json: warning: a body's velocity was cut to the safety bound") != std::string::npos,
+                 torn.err.c_str());
+
+        const Measured calm = runMeasured(dir_, {QString(INTERPLAY_SOURCE_DIR) + "/scenes/pendulums.json", "--steps", "300"});
+        QVERIFY2(calm.exitCode == 0, calm.err.c_str());
+        QCOMPARE(nlohmann::json::parse(calm.out)["metrics"]["boundedVelocities"].get<std::uint64_t>(), std::uint64_t(0));
+        QVERIFY2(calm.err.empty(), calm.err.c_str());
+    }
+
     // ---- size: refused while parsing, in bounded time and memory ----
 
     // A million bodies (38 MB of text, under the 64 MiB file limit): refused when the body array

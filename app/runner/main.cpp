@@ -144,6 +144,7 @@ int run(const runner::RunnerOptions& options) {
         for (int stage = 0; stage < simcore::kStageCount; ++stage) summary.stageMs[stage] += profile.stageMs[stage];
         summary.maxPenetration = std::max(summary.maxPenetration, profile.maxPenetration);
         summary.droppedPairs += profile.counters.droppedPairs;
+        summary.boundedVelocities += profile.counters.boundedVelocities;
         if (world.jointCount() > 0) {
             const simcore::JointError jointError = world.worstJointError();
             summary.maxJointError.position = std::max(summary.maxJointError.position, jointError.position);
@@ -163,6 +164,13 @@ int run(const runner::RunnerOptions& options) {
                   << " overlapping pairs (summed over steps) were not made into contacts: bodies at the contact cap "
                      "(settings.contact.maxContactsPerBody = "
                   << world.settings().contact.maxContactsPerBody << ") pass through them\n";
+    if (summary.boundedVelocities > 0)
+        std::cerr << options.scenePath << ": warning: a body's velocity was cut to the safety bound (1e5 m/s, a "
+                     "quarter turn per substep) "
+                  << summary.boundedVelocities
+                  << " times (summed over steps), so the motion is not physical: bodies get there when the "
+                     "simulation is unstable (a joint torn far apart, a violent overlap), where more substeps or a "
+                     "smaller time step help\n";
     const nlohmann::ordered_json report = runner::makeReport(world, summary);
     const std::string text = report.dump(2);
     std::cout << text << '\n';

@@ -35,13 +35,15 @@ nlohmann::ordered_json makeReport(const simcore::World& world, const RunSummary&
     report["counters"] = {{"bodies", c.bodies},          {"dynamicBodies", c.dynamicBodies},
                           {"awakeBodies", c.awakeBodies}, {"pairs", c.pairs},
                           {"manifolds", c.manifolds},     {"contactPoints", c.contactPoints},
-                          {"islands", c.islands},         {"droppedPairs", c.droppedPairs}};
+                          {"islands", c.islands},         {"droppedPairs", c.droppedPairs},
+                          {"boundedVelocities", c.boundedVelocities}};
 
     const double kinetic = world.kineticEnergy();
     const double potential = world.potentialEnergy();
     report["metrics"] = {
         {"maxPenetration", summary.maxPenetration},
         {"droppedPairs", summary.droppedPairs},  // pairs refused by the contact cap, summed over steps
+        {"boundedVelocities", summary.boundedVelocities},  // cut to the safety bound, summed over steps
         {"kineticEnergy", kinetic},
         {"potentialEnergy", potential},
         {"totalEnergy", kinetic + potential},

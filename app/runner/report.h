@@ -21,6 +21,7 @@ struct RunSummary {
     float maxPenetration = 0.0f;                             // deepest contact overlap seen in any step (m)
     simcore::JointError maxJointError;                       // worst joint position / angle error of any step
     std::uint64_t droppedPairs = 0;                          // pairs refused by the contact cap, summed over steps
+    std::uint64_t boundedVelocities = 0;                     // velocities cut to the safety bound, summed over steps
 };
 
 nlohmann::ordered_json makeReport(const simcore::World& world, const RunSummary& summary);

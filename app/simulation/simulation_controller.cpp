@@ -69,6 +69,7 @@ bool SimulationController::build(simcore::Scene scene, QString* error) {
     for (const simcore::SceneBody& body : m_scene.bodies) m_colors.push_back(body.color);
     m_grab.reset();
     m_history.clear();
+    m_boundWarned = false;
     m_rebuildBeforeRun = false;
     emit worldRebuilt();
     return true;
@@ -405,6 +406,13 @@ bool SimulationController::advance(int steps) {
         world.step();
         m_history.push_back({world.simulatedTime(), world.lastStepProfile(), world.kineticEnergy(), world.potentialEnergy()});
         if (m_history.size() > kHistoryLength) m_history.pop_front();
+        if (!m_boundWarned && world.lastStepProfile().counters.boundedVelocities > 0) {
+            m_boundWarned = true;
+            emit simulationWarning(tr("At step %1 a body reached the engine's speed limit (100 km/s, a quarter turn per "
+                                      "substep): the motion is no longer physical. Unstable assemblies (a joint torn "
+                                      "far apart, a violent overlap) get there; more substeps or a smaller time step help.")
+                                       .arg(world.stepCount()));
+        }
     }
     // Checked once per batch, not per step: enough to stop playback before garbage spreads.
     if (const auto bad = world.findNonFiniteBody()) {

@@ -156,6 +156,8 @@ signals:
     void playingChanged(bool playing);
     void timeScaleChanged(double scale);
     void simulationError(const QString& message);  // e.g. a non-finite state; playback stops
+    // The run is no longer physical (a velocity cut to the engine's safety bound); once per run.
+    void simulationWarning(const QString& message);
     void editFailed(const QString& message);       // a followed edit could be neither applied nor rebuilt from
 
 private:
@@ -191,6 +193,7 @@ private:
     std::vector<std::optional<simcore::Vec3>> m_colors;
     std::optional<Grab> m_grab;
     std::deque<StepSample> m_history;
+    bool m_boundWarned = false;  // simulationWarning sent for this world
 
     QTimer m_timer;
     QElapsedTimer m_clock;

@@ -16,14 +16,17 @@ namespace {
 constexpr float kMaxLinearSpeed = 1e5f;                      // m/s, ten times the loader's limit
 constexpr float kMaxRotationPerSubstep = 0.25f * 3.14159265f;  // rad
 
-void boundSpeed(Vec3& velocity, float maxSpeed) {
+bool boundSpeed(Vec3& velocity, float maxSpeed) {
     const float speed2 = glm::dot(velocity, velocity);
-    if (speed2 > maxSpeed * maxSpeed) velocity *= maxSpeed / std::sqrt(speed2);
+    if (!(speed2 > maxSpeed * maxSpeed)) return false;
+    velocity *= maxSpeed / std::sqrt(speed2);
+    return true;
 }
 
-void boundVelocity(Vec3& linear, Vec3& angular, float dt) {
-    boundSpeed(linear, kMaxLinearSpeed);
-    boundSpeed(angular, kMaxRotationPerSubstep / dt);
+// Whether it had to cut either velocity.
+bool boundVelocity(Vec3& linear, Vec3& angular, float dt) {
+    const bool linearCut = boundSpeed(linear, kMaxLinearSpeed);
+    return boundSpeed(angular, kMaxRotationPerSubstep / dt) || linearCut;
 }
 
 // Torque-free Euler equations I dw/dt + w x (I w) = 0 in body axes, by the implicit midpoint rule:
@@ -58,8 +61,9 @@ Vec3 solveGyroscopic(const Quat& orientation, const Mat3& bodyInertia, const Vec
 
 }  // namespace
 
-void BodyIntegrator::integrateVelocities(BodyStorage& bodies, Integrator method, const VelocityIntegration& params,
-                                         float dt) {
+std::uint32_t BodyIntegrator::integrateVelocities(BodyStorage& bodies, Integrator method, const VelocityIntegration& params,
+                                                  float dt) {
+    std::uint32_t bounded = 0;
     const std::size_t n = bodies.size();
     const bool keepStart = method != Integrator::SymplecticEuler;
     if (keepStart) {
@@ -69,7 +73,7 @@ void BodyIntegrator::integrateVelocities(BodyStorage& bodies, Integrator method,
     for (std::size_t i = 0; i < n; ++i) {
         const bool moves = bodies.motion[i] == MotionType::Dynamic && bodies.awake[i];
         // The relax passes of the substep before may have left a torn assembly beyond the bound.
-        if (moves) boundVelocity(bodies.linearVelocity[i], bodies.angularVelocity[i], dt);
+        if (moves && boundVelocity(bodies.linearVelocity[i], bodies.angularVelocity[i], dt)) ++bounded;
         if (keepStart) {
             // Kinematic bodies too: their start velocity is their only velocity.
             startLinear_[i] = bodies.linearVelocity[i];
@@ -89,20 +93,26 @@ void BodyIntegrator::integrateVelocities(BodyStorage& bodies, Integrator method,
         bodies.force[i] = Vec3(0.0f);
         bodies.torque[i] = Vec3(0.0f);
     }
+    return bounded;
 }
 
-void BodyIntegrator::boundVelocities(BodyStorage& bodies, float dt) const {
+std::uint32_t BodyIntegrator::boundVelocities(BodyStorage& bodies, float dt) const {
+    std::uint32_t bounded = 0;
     for (std::size_t i = 0; i < bodies.size(); ++i)
-        if (bodies.motion[i] == MotionType::Dynamic && bodies.awake[i])
-            boundVelocity(bodies.linearVelocity[i], bodies.angularVelocity[i], dt);
+        if (bodies.motion[i] == MotionType::Dynamic && bodies.awake[i] &&
+            boundVelocity(bodies.linearVelocity[i], bodies.angularVelocity[i], dt))
+            ++bounded;
+    return bounded;
 }
 
-void BodyIntegrator::integratePositions(BodyStorage& bodies, Integrator method, float dt) const {
+std::uint32_t BodyIntegrator::integratePositions(BodyStorage& bodies, Integrator method, float dt) const {
+    std::uint32_t bounded = 0;
     const std::size_t n = bodies.size();
     for (std::size_t i = 0; i < n; ++i) {
         if (bodies.motion[i] == MotionType::Static || !bodies.awake[i]) continue;
 
-        if (bodies.motion[i] == MotionType::Dynamic) boundVelocity(bodies.linearVelocity[i], bodies.angularVelocity[i], dt);
+        if (bodies.motion[i] == MotionType::Dynamic && boundVelocity(bodies.linearVelocity[i], bodies.angularVelocity[i], dt))
+            ++bounded;
         Vec3 v = bodies.linearVelocity[i];
         Vec3 w = bodies.angularVelocity[i];
         if (method == Integrator::ExplicitEuler) {
@@ -121,6 +131,7 @@ void BodyIntegrator::integratePositions(BodyStorage& bodies, Integrator method, 
         q = glm::normalize(q + (0.5f * dt) * (spin * q));
         bodies.refreshInverseInertiaWorld(i);
     }
+    return bounded;
 }
 
 }  // namespace simcore

@@ -6,6 +6,7 @@
 #include "simcore/dynamics/body_storage.h"
 #include "simcore/world/world_settings.h"
 
+#include <cstdint>
 #include <vector>
 
 namespace simcore {
@@ -19,14 +20,17 @@ struct VelocityIntegration {
 
 class BodyIntegrator {
 public:
+    // Each returns how many bodies' velocities it cut to the safety bound (1e5 m/s, a quarter turn
+    // per substep dt), which it applies to every awake dynamic body before using a velocity: more
+    // than zero means the simulation is unstable.
+    //
     // Updates velocities; the integrators that move by the start-of-substep velocity keep a copy.
-    void integrateVelocities(BodyStorage& bodies, Integrator method, const VelocityIntegration& params, float dt);
+    std::uint32_t integrateVelocities(BodyStorage& bodies, Integrator method, const VelocityIntegration& params, float dt);
     // Advances centres of mass and orientations, renormalises orientations and refreshes world-
     // frame inverse inertia. `method` must be the one given to this substep's integrateVelocities.
-    void integratePositions(BodyStorage& bodies, Integrator method, float dt) const;
-    // Holds every awake dynamic body to the safety bound (1e5 m/s, a quarter turn per substep dt)
-    // that both passes above apply before they use a velocity.
-    void boundVelocities(BodyStorage& bodies, float dt) const;
+    std::uint32_t integratePositions(BodyStorage& bodies, Integrator method, float dt) const;
+    // Only the bound.
+    std::uint32_t boundVelocities(BodyStorage& bodies, float dt) const;
 
 private:
     std::vector<Vec3> startLinear_, startAngular_;  // by dense index; reused, so the step never allocates

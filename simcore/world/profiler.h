@@ -32,6 +32,9 @@ struct StepCounters {
     std::uint32_t manifolds = 0;      // touching pairs with contact points
     std::uint32_t contactPoints = 0;
     std::uint32_t islands = 0;
+    // Times a dynamic body's velocity was cut to the safety bound (1e5 m/s, a quarter turn per
+    // substep) this step: more than zero means the simulation is unstable (a torn joint, say).
+    std::uint32_t boundedVelocities = 0;
 };
 
 struct StepProfile {

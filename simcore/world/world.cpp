@@ -338,7 +338,7 @@ void World::step() {
     for (int substep = 0; substep < settings_.substeps; ++substep) {
         {
             ScopedStageTimer timer(slot(Stage::IntegrateVelocities));
-            integrator_.integrateVelocities(bodies_, settings_.integrator, velocityParams, h);
+            profile.counters.boundedVelocities += integrator_.integrateVelocities(bodies_, settings_.integrator, velocityParams, h);
         }
         if (solveContacts || solveJoints) {
             ScopedStageTimer timer(slot(Stage::SolveConstraints));
@@ -352,7 +352,7 @@ void World::step() {
         }
         {
             ScopedStageTimer timer(slot(Stage::IntegratePositions));
-            integrator_.integratePositions(bodies_, settings_.integrator, h);
+            profile.counters.boundedVelocities += integrator_.integratePositions(bodies_, settings_.integrator, h);
         }
         if (bounce) {
             // Before relax, which would slow a body about to hit down to the speed that just closes
@@ -372,7 +372,7 @@ void World::step() {
         // Joints are the one source that can pass the bound within a step (a torn assembly, in its
         // last relax passes), so only they pay for holding the state between steps to it.
         ScopedStageTimer timer(slot(Stage::SolveConstraints));
-        integrator_.boundVelocities(bodies_, h);
+        profile.counters.boundedVelocities += integrator_.boundVelocities(bodies_, h);
     }
     if (solveContacts) {
         ScopedStageTimer timer(slot(Stage::SolveConstraints));

@@ -15,6 +15,7 @@ struct EditorSession {
     interplay::SimulationController simulation;
     QStringList editErrors;        // edits the simulation could neither take in place nor rebuild from
     QStringList simulationErrors;  // what the controller reported (non-finite states)
+    QStringList simulationWarnings;  // runs that stopped being physical (the speed bound)
 
     EditorSession() {
         simulation.followDocument(&document);
@@ -26,6 +27,8 @@ struct EditorSession {
         });
         QObject::connect(&simulation, &interplay::SimulationController::simulationError, &document,
                          [this](const QString& message) { simulationErrors << message; });
+        QObject::connect(&simulation, &interplay::SimulationController::simulationWarning, &document,
+                         [this](const QString& message) { simulationWarnings << message; });
     }
 
     // Apply Simulated Pose, as the window's action makes it.
