@@ -30,15 +30,7 @@ void TestLongStability::pyramidOfBase20Stands10s() {
     World world(settings);
     addGround(world);
     std::vector<BodyId> cubes;
-    constexpr int kBase = 20;
-    for (int layer = 0; layer < kBase; ++layer) {
-        const int n = kBase - layer;
-        const float offset = -0.5f * static_cast<float>(n - 1);
-        for (int i = 0; i < n; ++i)
-            for (int k = 0; k < n; ++k)
-                cubes.push_back(world.createBody(cube(
-                    Vec3(offset + static_cast<float>(i), 0.5f + static_cast<float>(layer), offset + static_cast<float>(k)))));
-    }
+    for (const Vec3& centre : squarePyramidCentres(20)) cubes.push_back(world.createBody(cube(centre)));
     QCOMPARE(cubes.size(), std::size_t{2870});
     std::vector<Vec3> start;
     for (BodyId id : cubes) start.push_back(world.position(id));

@@ -345,14 +345,7 @@ ReferenceScene tower() {
 
 ReferenceScene pyramid() {
     std::vector<std::pair<Vec3, float>> cubes;
-    constexpr int kBase = 5;
-    for (int layer = 0; layer < kBase; ++layer) {
-        const int side = kBase - layer;
-        const float offset = -0.5f * static_cast<float>(side - 1);
-        for (int z = 0; z < side; ++z)
-            for (int x = 0; x < side; ++x)
-                cubes.emplace_back(Vec3(offset + static_cast<float>(x), 0.5f + static_cast<float>(layer), offset + static_cast<float>(z)), 1.0f);
-    }
+    for (const Vec3& centre : test_support::squarePyramidCentres(5)) cubes.emplace_back(centre, 1.0f);
     ReferenceScene s = standingCubes(std::move(cubes));
     s.name = "pyramid-drift";
     s.title = "Pyramid of 55 cubes: drift";

@@ -5,6 +5,7 @@
 #include "simcore/world/world.h"
 
 #include <cmath>
+#include <vector>
 
 namespace test_support {
 
@@ -61,6 +62,20 @@ inline BodyCreationSettings cube(const Vec3& position, float mass = 1.0f, float 
     b.mass = mass;
     b.friction = friction;
     return b;
+}
+
+// Centres of the unit cubes of a square pyramid standing on y = 0: `base` x `base` at the bottom,
+// each layer one cube narrower and centred on the one below.
+inline std::vector<Vec3> squarePyramidCentres(int base) {
+    std::vector<Vec3> centres;
+    for (int layer = 0; layer < base; ++layer) {
+        const int side = base - layer;
+        const float offset = -0.5f * static_cast<float>(side - 1);
+        for (int z = 0; z < side; ++z)
+            for (int x = 0; x < side; ++x)
+                centres.emplace_back(offset + static_cast<float>(x), 0.5f + static_cast<float>(layer), offset + static_cast<float>(z));
+    }
+    return centres;
 }
 
 // A static 30 degree ramp (a thin box turned about z, rising towards +x) centred at the origin,
