@@ -21,7 +21,7 @@ private slots:
     void pyramidOfBase20Stands10s();
 };
 
-// At the default 4 substeps the upper layers start to jitter after about 5 s and a slow sideways
+// At the default 4 substeps the upper layers bounce from the first step and a slow sideways
 // creep topples the pyramid; 8 substeps hold it (measured drift 9 mm, all of it the soft contacts'
 // compression under the load of 20 layers).
 void TestLongStability::pyramidOfBase20Stands10s() {
