@@ -95,9 +95,11 @@ void JointSolver::prepare(JointStorage& joints, const BodyStorage& bodies, const
 }
 
 void JointSolver::warmStart(BodyStorage& bodies) {
-    for (const Constraint& c : constraints_) {
+    substepGeometry_.resize(constraints_.size());
+    for (std::size_t ci = 0; ci < constraints_.size(); ++ci) {
+        const Constraint& c = constraints_[ci];
         Joint& j = joints_->joints[c.joint];
-        const JointGeometry g = jointGeometry(j, poseOf(c.bodyA, bodies), poseOf(c.bodyB, bodies));
+        const JointGeometry& g = substepGeometry_[ci] = jointGeometry(j, poseOf(c.bodyA, bodies), poseOf(c.bodyB, bodies));
         const JointImpulses& impulse = j.impulses;
         // Along the row of the motor and the lower limit (the upper limit's row is reversed).
         const float axial = impulse.motor + impulse.lower - impulse.upper;
@@ -130,9 +132,10 @@ void JointSolver::warmStart(BodyStorage& bodies) {
 }
 
 void JointSolver::solve(BodyStorage& bodies, bool useBias) {
-    for (const Constraint& c : constraints_) {
+    for (std::size_t ci = 0; ci < constraints_.size(); ++ci) {
+        const Constraint& c = constraints_[ci];
         Joint& j = joints_->joints[c.joint];
-        const JointGeometry g = jointGeometry(j, poseOf(c.bodyA, bodies), poseOf(c.bodyB, bodies));
+        const JointGeometry g = useBias ? substepGeometry_[ci] : jointGeometry(j, poseOf(c.bodyA, bodies), poseOf(c.bodyB, bodies));
         BodyPairState state = load(c, bodies);
         solveConstraint(c, j, state, g, useBias);
         store(c, j, state, bodies);

@@ -9,6 +9,7 @@
 // Within one World::step the solver is used as the contact solver is:
 //   prepare (once) -> for each substep { warmStart, solve(useBias=true) x N, [positions move],
 //   relax = solve(useBias=false) x M }. Impulses live in the joints, so nothing is stored after.
+// solve(useBias=true) must follow warmStart with no position change between.
 
 #include "simcore/dynamics/body_storage.h"
 #include "simcore/dynamics/constraint_math.h"
@@ -55,6 +56,10 @@ private:
                          bool useBias) const;
 
     std::vector<Constraint> constraints_;
+    // Each constraint's geometry, from warmStart: the bodies do not move until the substep's
+    // positions are integrated, so the velocity passes reuse it; the relax passes, after the
+    // move, compute their own.
+    std::vector<JointGeometry> substepGeometry_;
     JointStorage* joints_ = nullptr;
     Params params_;
     SoftConstraint soft_;  // rigid rows while the bias is on
