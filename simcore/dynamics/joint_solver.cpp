@@ -30,6 +30,27 @@ Row linearRow(const Vec3& direction, const Vec3& armA, const Vec3& armB) {
 Row angularRow(const Vec3& axis) { return {Vec3(0.0f), axis, axis}; }
 Row reversed(const Row& r) { return {-r.linear, -r.angularA, -r.angularB}; }
 
+// The rigid rows of a hinge, slider or fixed joint in pose g: three rotation rows (two across a
+// hinge's axis) and three anchor rows (two across a slider's).
+struct RigidRows {
+    Vec3 rotationError{0.0f}, separation{0.0f};  // C of the rotation and anchor rows
+    Vec3 armA{0.0f}, armB{0.0f};                 // where the anchor rows act
+    std::optional<Vec3> freeRotation, freeTranslation;
+};
+RigidRows rigidRows(const Joint& j, const JointGeometry& g) {
+    switch (j.type) {
+        // Axis alignment: B's axis leaves A's by the rotation a x b, perpendicular to a.
+        case JointType::Hinge: return {glm::cross(g.axisA, g.axisB), g.separation, g.armA, g.armB, g.axisA, std::nullopt};
+        // Rows act at B's anchor: on A that point is armA + separation from its centre of mass.
+        case JointType::Slider: return {g.rotationError(), g.separation, g.armA + g.separation, g.armB, std::nullopt, g.axisA};
+        case JointType::Fixed: return {g.rotationError(), g.separation, g.armA, g.armB, std::nullopt, std::nullopt};
+        case JointType::Ball:
+        case JointType::Distance: break;
+    }
+    assert(false && "only hinge, slider and fixed joints have a rigid block");
+    return {};
+}
+
 }  // namespace
 
 JointBodyPose JointSolver::poseOf(std::uint32_t body, const BodyStorage& bodies) const {
@@ -96,6 +117,7 @@ void JointSolver::prepare(JointStorage& joints, const BodyStorage& bodies, const
 
 void JointSolver::warmStart(BodyStorage& bodies) {
     substepGeometry_.resize(constraints_.size());
+    substepFactor_.resize(constraints_.size());
     for (std::size_t ci = 0; ci < constraints_.size(); ++ci) {
         const Constraint& c = constraints_[ci];
         Joint& j = joints_->joints[c.joint];
@@ -123,6 +145,7 @@ void JointSolver::warmStart(BodyStorage& bodies) {
             }
         }
         BodyPairState v = load(c, bodies);
+        substepFactor_[ci] = factor(c, j, v, g);
         v.linearA -= c.inverseMassA * linear;
         v.angularA -= v.inverseInertiaA * (glm::cross(armA, linear) + angular);
         v.linearB += c.inverseMassB * linear;
@@ -135,17 +158,83 @@ void JointSolver::solve(BodyStorage& bodies, bool useBias) {
     for (std::size_t ci = 0; ci < constraints_.size(); ++ci) {
         const Constraint& c = constraints_[ci];
         Joint& j = joints_->joints[c.joint];
-        const JointGeometry g = useBias ? substepGeometry_[ci] : jointGeometry(j, poseOf(c.bodyA, bodies), poseOf(c.bodyB, bodies));
         BodyPairState state = load(c, bodies);
-        solveConstraint(c, j, state, g, useBias);
+        if (useBias) {
+            solveConstraint(c, j, state, substepGeometry_[ci], substepFactor_[ci], useBias);
+        } else {
+            const JointGeometry g = jointGeometry(j, poseOf(c.bodyA, bodies), poseOf(c.bodyB, bodies));
+            solveConstraint(c, j, state, g, factor(c, j, state, g), useBias);
+        }
         store(c, j, state, bodies);
     }
+}
+
+// All rigid rows of the joint as one soft constraint on their joint effective mass matrix
+// K = J M^-1 J^T: up to three rotation rows (a torque impulse) and three anchor rows (an impulse
+// at the anchors), K = [Kaa Kap; Kap^T Kpp]. Why one block: with an anchor far from a body's
+// centre, the two kinds of row are strongly coupled (turning the body moves the anchor). Solved
+// apart, each block's spring was scaled to the mass of its own rows alone (the inertia about
+// the centre of mass, or the little mass that swings the anchor round it), not to what the
+// joint holds (that inertia plus m r^2), so a long lever arm made the joint hundreds of times
+// softer than its hertz: metres of stretch under load. A spring scaled to a mass matrix that
+// turns with the bodies is not conservative, and at such stretch it pumped energy in until the
+// bodies flew apart. Scaled to the joint's whole K, the stretch is that of the joint's hertz,
+// and the pumping (which grows with the stretch squared) is negligible.
+//
+// A free direction f (a hinge's axis among the rotation rows, a slider's among the anchor rows)
+// is taken out with the projection P = 1 - f f^T: the block P K P + f f^T on P's right-hand side
+// gives the rows across f their solution and f's component zero.
+//
+// A ball joint has the anchor rows alone. Both blocks are positive definite unless float has lost
+// them (a lever arm of kilometres on a small body): then the solve gives a non-finite impulse, and
+// the rows wait for a better pose.
+JointSolver::RigidFactor JointSolver::factor(const Constraint& c, const Joint& j, const BodyPairState& v,
+                                             const JointGeometry& g) const {
+    const Mat3& inertiaA = v.inverseInertiaA;
+    const Mat3& inertiaB = v.inverseInertiaB;
+    const float inverseMassSum = c.inverseMassA + c.inverseMassB;
+    RigidFactor f;
+    if (j.type == JointType::Distance) return f;
+    if (j.type == JointType::Ball) {
+        const Mat3 skewA = skew(g.armA), skewB = skew(g.armB);
+        f.pointInverse = glm::inverse(Mat3(inverseMassSum) - skewA * inertiaA * skewA - skewB * inertiaB * skewB);
+        return f;
+    }
+    const RigidRows rows = rigidRows(j, g);
+    const Mat3 skewA = skew(rows.armA), skewB = skew(rows.armB);
+    f.turnA = inertiaA * skewA;
+    f.turnB = inertiaB * skewB;
+    Mat3 kaa = inertiaA + inertiaB;
+    Mat3 kap = f.turnA + f.turnB;
+    Mat3 kpp = Mat3(inverseMassSum) - skewA * f.turnA - skewB * f.turnB;
+    // P K P + f f^T for a symmetric K, by outer products (cheaper than two matrix products).
+    auto projectSymmetric = [](const Mat3& k, const Vec3& axis) {
+        const Vec3 kf = k * axis;
+        return k - glm::outerProduct(axis, kf) - glm::outerProduct(kf, axis) +
+               (glm::dot(axis, kf) + 1.0f) * glm::outerProduct(axis, axis);
+    };
+    if (rows.freeRotation) {
+        const Vec3& axis = *rows.freeRotation;
+        kaa = projectSymmetric(kaa, axis);
+        kap -= glm::outerProduct(axis, glm::transpose(kap) * axis);  // P Kap = Kap - f (Kap^T f)^T
+    }
+    if (rows.freeTranslation) {
+        const Vec3& axis = *rows.freeTranslation;
+        kpp = projectSymmetric(kpp, axis);
+        kap -= glm::outerProduct(kap * axis, axis);  // Kap P = Kap - (Kap f) f^T
+    }
+    // Block elimination of the rotation rows: the anchor rows on the Schur complement of Kaa.
+    f.kap = kap;
+    f.kaaInverse = glm::inverse(kaa);
+    f.couplingThrough = glm::transpose(kap) * f.kaaInverse;
+    f.pointInverse = glm::inverse(kpp - f.couplingThrough * kap);
+    return f;
 }
 
 // Rows in order of importance, the most important last so it has the final word: motor, limits,
 // then the rigid rows (rotation and anchor point together).
 void JointSolver::solveConstraint(const Constraint& c, Joint& j, BodyPairState& v, const JointGeometry& g,
-                                  bool useBias) const {
+                                  const RigidFactor& f, bool useBias) const {
     const float inverseH = 1.0f / params_.substepDt;
     const Mat3& inertiaA = v.inverseInertiaA;
     const Mat3& inertiaB = v.inverseInertiaB;
@@ -199,72 +288,30 @@ void JointSolver::solveConstraint(const Constraint& c, Joint& j, BodyPairState& 
         apply(r, updated - j.impulses.motor);
         j.impulses.motor = updated;
     };
-    // All rigid rows of the joint as one soft constraint on their joint effective mass matrix
-    // K = J M^-1 J^T: up to three rotation rows (a torque impulse) and three anchor rows (an impulse
-    // at the anchors), K = [Kaa Kap; Kap^T Kpp]. Why one block: with an anchor far from a body's
-    // centre, the two kinds of row are strongly coupled (turning the body moves the anchor). Solved
-    // apart, each block's spring was scaled to the mass of its own rows alone (the inertia about
-    // the centre of mass, or the little mass that swings the anchor round it), not to what the
-    // joint holds (that inertia plus m r^2), so a long lever arm made the joint hundreds of times
-    // softer than its hertz: metres of stretch under load. A spring scaled to a mass matrix that
-    // turns with the bodies is not conservative, and at such stretch it pumped energy in until the
-    // bodies flew apart. Scaled to the joint's whole K, the stretch is that of the joint's hertz,
-    // and the pumping (which grows with the stretch squared) is negligible.
-    //
-    // A free direction f (a hinge's axis among the rotation rows, a slider's among the anchor rows)
-    // is taken out with the projection P = 1 - f f^T: the block P K P + f f^T on P's right-hand side
-    // gives the rows across f their solution and f's component zero.
-    struct RigidRows {
-        Vec3 rotationError{0.0f}, separation{0.0f};  // C of the rotation and anchor rows
-        Vec3 armA{0.0f}, armB{0.0f};                 // where the anchor rows act
-        std::optional<Vec3> freeRotation, freeTranslation;
-    };
+    // The rigid rows, on the factor of their joint mass matrix (see factor).
     auto solveRigid = [&](const RigidRows& rows) {
-        const Mat3 skewA = skew(rows.armA), skewB = skew(rows.armB);
-        const Mat3 turnA = inertiaA * skewA, turnB = inertiaB * skewB;  // angular velocity per anchor impulse
-        Mat3 kaa = inertiaA + inertiaB;
-        Mat3 kap = turnA + turnB;
-        Mat3 kpp = Mat3(inverseMassSum) - skewA * turnA - skewB * turnB;
         Vec3 ra = v.angularB - v.angularA + rigid.biasRate * rows.rotationError;
         Vec3 rp = v.linearB + glm::cross(v.angularB, rows.armB) - v.linearA - glm::cross(v.angularA, rows.armA) +
                   rigid.biasRate * rows.separation;
         Vec3 oldAngular = j.impulses.angular, oldPoint = j.impulses.point;
-        // P K P + f f^T for a symmetric K, by outer products (cheaper than two matrix products).
-        auto projectSymmetric = [](const Mat3& k, const Vec3& f) {
-            const Vec3 kf = k * f;
-            return k - glm::outerProduct(f, kf) - glm::outerProduct(kf, f) +
-                   (glm::dot(f, kf) + 1.0f) * glm::outerProduct(f, f);
-        };
-        auto project = [](const Vec3& x, const Vec3& f) { return x - glm::dot(f, x) * f; };
+        auto project = [](const Vec3& x, const Vec3& axis) { return x - glm::dot(axis, x) * axis; };
         if (rows.freeRotation) {
-            const Vec3& f = *rows.freeRotation;
-            kaa = projectSymmetric(kaa, f);
-            kap -= glm::outerProduct(f, glm::transpose(kap) * f);  // P Kap = Kap - f (Kap^T f)^T
-            ra = project(ra, f);
-            oldAngular = project(oldAngular, f);
+            ra = project(ra, *rows.freeRotation);
+            oldAngular = project(oldAngular, *rows.freeRotation);
         }
         if (rows.freeTranslation) {
-            const Vec3& f = *rows.freeTranslation;
-            kpp = projectSymmetric(kpp, f);
-            kap -= glm::outerProduct(kap * f, f);  // Kap P = Kap - (Kap f) f^T
-            rp = project(rp, f);
-            oldPoint = project(oldPoint, f);
+            rp = project(rp, *rows.freeTranslation);
+            oldPoint = project(oldPoint, *rows.freeTranslation);
         }
-        // Block elimination of the rotation rows (the Schur complement of Kaa). Both are positive
-        // definite unless float has lost them (a lever arm of kilometres on a small body): then the
-        // rows wait for a better pose rather than apply a non-finite impulse.
-        const Mat3 kaaInverse = glm::inverse(kaa);
-        const Mat3 couplingThrough = glm::transpose(kap) * kaaInverse;
-        const Mat3 schur = kpp - couplingThrough * kap;
-        const Vec3 xp = glm::inverse(schur) * (rp - couplingThrough * ra);
-        const Vec3 xa = kaaInverse * (ra - kap * xp);
-        if (!std::isfinite(glm::dot(xa, xa) + glm::dot(xp, xp))) return;
+        const Vec3 xp = f.pointInverse * (rp - f.couplingThrough * ra);
+        const Vec3 xa = f.kaaInverse * (ra - f.kap * xp);
+        if (!std::isfinite(glm::dot(xa, xa) + glm::dot(xp, xp))) return;  // see factor
         const Vec3 angular = -rigid.massScale * xa - rigid.impulseScale * oldAngular;
         const Vec3 point = -rigid.massScale * xp - rigid.impulseScale * oldPoint;
         v.linearA -= c.inverseMassA * point;
-        v.angularA -= inertiaA * angular + turnA * point;
+        v.angularA -= inertiaA * angular + f.turnA * point;
         v.linearB += c.inverseMassB * point;
-        v.angularB += inertiaB * angular + turnB * point;
+        v.angularB += inertiaB * angular + f.turnB * point;
         j.impulses.angular = oldAngular + angular;
         j.impulses.point = oldPoint + point;
     };
@@ -272,12 +319,10 @@ void JointSolver::solveConstraint(const Constraint& c, Joint& j, BodyPairState& 
     switch (j.type) {
         case JointType::Ball: {
             // Anchors coincide; rotation is free, so there are no rotation rows: solved alone.
-            const Mat3 skewA = skew(g.armA), skewB = skew(g.armB);
-            const Mat3 k = Mat3(inverseMassSum) - skewA * inertiaA * skewA - skewB * inertiaB * skewB;
             const Vec3 relative =
                 v.linearB + glm::cross(v.angularB, g.armB) - v.linearA - glm::cross(v.angularA, g.armA);
             const Vec3 rhs = relative + rigid.biasRate * g.separation;
-            const Vec3 impulse = -rigid.massScale * (glm::inverse(k) * rhs) - rigid.impulseScale * j.impulses.point;
+            const Vec3 impulse = -rigid.massScale * (f.pointInverse * rhs) - rigid.impulseScale * j.impulses.point;
             v.linearA -= c.inverseMassA * impulse;
             v.angularA -= inertiaA * glm::cross(g.armA, impulse);
             v.linearB += c.inverseMassB * impulse;
@@ -290,22 +335,18 @@ void JointSolver::solveConstraint(const Constraint& c, Joint& j, BodyPairState& 
             const Row twist = angularRow(-g.axisA);
             if (j.motor) solveMotor(twist);
             if (j.limits) solveLimits(twist, g.hingeAngle(j), j.limits->lower, j.limits->upper);
-            // Axis alignment: B's axis leaves A's by the rotation a x b, perpendicular to a.
-            solveRigid({glm::cross(g.axisA, g.axisB), g.separation, g.armA, g.armB, g.axisA, std::nullopt});
+            solveRigid(rigidRows(j, g));
             break;
         }
         case JointType::Slider: {
-            // Rows act at B's anchor: on A that point is armA + separation from its centre of mass.
-            const Vec3 armA = g.armA + g.separation;
-            const Row slide = linearRow(-g.axisA, armA, g.armB);  // A relative to B, as the twist
+            const RigidRows rows = rigidRows(j, g);
+            const Row slide = linearRow(-g.axisA, rows.armA, rows.armB);  // A relative to B, as the twist
             if (j.motor) solveMotor(slide);
             if (j.limits) solveLimits(slide, g.slide(), j.limits->lower, j.limits->upper);
-            solveRigid({g.rotationError(), g.separation, armA, g.armB, std::nullopt, g.axisA});
+            solveRigid(rows);
             break;
         }
-        case JointType::Fixed:
-            solveRigid({g.rotationError(), g.separation, g.armA, g.armB, std::nullopt, std::nullopt});
-            break;
+        case JointType::Fixed: solveRigid(rigidRows(j, g)); break;
         case JointType::Distance: {
             const float length = glm::length(g.separation);
             if (length < kMinDirectionLength) break;

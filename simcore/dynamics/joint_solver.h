@@ -48,18 +48,28 @@ private:
     // The two bodies' velocities, and their world inverse inertia as of now (not of prepare: a
     // long link turns a lot within a step, and a stale inertia misjudges the joint's mass).
     struct BodyPairState;
+    // A joint's rigid rows' mass matrix for one pose, factored (see solveConstraint).
+    struct RigidFactor {
+        Mat3 turnA{0.0f}, turnB{0.0f};  // angular velocity of A, B per unit impulse at the anchor
+        Mat3 kap{0.0f};                 // rotation-anchor coupling block of K, free direction out
+        Mat3 kaaInverse{0.0f};          // inverse of the rotation block
+        Mat3 couplingThrough{0.0f};     // Kap^T Kaa^-1
+        Mat3 pointInverse{0.0f};        // inverse of the anchor block once rotation is eliminated
+    };
+    RigidFactor factor(const Constraint& c, const Joint& joint, const BodyPairState& state, const JointGeometry& g) const;
     BodyPairState load(const Constraint& c, const BodyStorage& bodies) const;
     void store(const Constraint& c, Joint& joint, const BodyPairState& state, BodyStorage& bodies) const;
 
     JointBodyPose poseOf(std::uint32_t body, const BodyStorage& bodies) const;
     void solveConstraint(const Constraint& c, Joint& joint, BodyPairState& state, const JointGeometry& g,
-                         bool useBias) const;
+                         const RigidFactor& rigidFactor, bool useBias) const;
 
     std::vector<Constraint> constraints_;
-    // Each constraint's geometry, from warmStart: the bodies do not move until the substep's
-    // positions are integrated, so the velocity passes reuse it; the relax passes, after the
-    // move, compute their own.
+    // Each constraint's geometry and factored mass matrix, from warmStart: the bodies do not move
+    // until the substep's positions are integrated, so the velocity passes reuse them; the relax
+    // passes, after the move, compute their own.
     std::vector<JointGeometry> substepGeometry_;
+    std::vector<RigidFactor> substepFactor_;
     JointStorage* joints_ = nullptr;
     Params params_;
     SoftConstraint soft_;  // rigid rows while the bias is on
