@@ -35,6 +35,7 @@
 
 #include <cmath>
 #include <algorithm>
+#include <memory>
 #include <optional>
 #include <random>
 
@@ -844,10 +845,17 @@ void TestEditorSoak::simulatedPoseCarriesJoints() {
     Scene scene;
     for (const float x : {-0.5f, 0.5f})
         scene.bodies.push_back(interplay::templateBody(ShapeType::Box, x < 0.0f ? QStringLiteral("Left") : QStringLiteral("Right"), {x, 5.0f, 0.0f}));
+    scene.bodies[0].body.position += Vec3(0.013f, 0.021f, -0.037f);  // off the grid, so that rounding shows
     scene.bodies[1].body.angularVelocity = {0.0f, 0.0f, 2.0f};  // the pair swings about the hinge as it falls
     scene.joints.push_back(interplay::templateJoint(JointType::Hinge, QStringLiteral("Hinge"), scene.bodies, 0, 1));
     session.document.restoreRecovered(scene, QString());
     const SceneJoint authored = session.document.joint(0);
+    // Applied before the run has moved anything, it changes nothing: no history entry (joints of
+    // unmoved bodies are not carried, which could round their anchors).
+    {
+        const std::unique_ptr<QUndoCommand> unchanged(session.simulatedPoseCommand());
+        QVERIFY(unchanged && unchanged->isObsolete());
+    }
     // Where the hinge sits on each body, in the body's axes.
     const auto localAnchor = [&](const SceneJoint& joint, int body) {
         const simcore::BodyCreationSettings& b = session.document.body(body).body;

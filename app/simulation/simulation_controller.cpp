@@ -479,16 +479,24 @@ QUndoCommand* SimulationController::simulatedPoseCommand(SceneDocument* document
         if (error) *error = tr("There is no simulated pose to apply.");
         return nullptr;
     }
+    // Joints move with the bodies the run moved; the others keep their anchors exactly (carried
+    // through an unchanged pose they would still be rounded, and the command would not be a no-op).
+    std::vector<bool> moved(applied.bodies.size(), false);
+    for (int i : indices) {
+        const simcore::BodyCreationSettings& before = document->body(i).body;
+        const simcore::BodyCreationSettings& after = applied.bodies[static_cast<std::size_t>(i)].body;
+        moved[static_cast<std::size_t>(i)] = before.position != after.position || before.orientation != after.orientation;
+    }
     QList<int> jointIndices;
-    const auto posed = [&](std::size_t body) { return indices.contains(static_cast<int>(body)); };
     for (std::size_t j = 0; j < applied.joints.size(); ++j) {
         simcore::SceneJoint& joint = applied.joints[j];
-        const bool movesA = posed(joint.bodyA), movesB = joint.bodyB && posed(*joint.bodyB);
+        const bool movesA = moved[joint.bodyA];
+        const bool movesB = joint.bodyB && moved[*joint.bodyB] && joint.joint.type == simcore::JointType::Distance;
         if (movesA) {
             joint.joint.anchor = livePoint(joint.bodyA, joint.joint.anchor);
             joint.joint.axis = liveDirection(joint.bodyA, joint.joint.axis);
         }
-        if (movesB) joint.joint.anchorB = livePoint(*joint.bodyB, joint.joint.anchorB);
+        if (movesB) joint.joint.anchorB = livePoint(*joint.bodyB, joint.joint.anchorB);  // only a distance joint has one
         if (movesA || movesB) jointIndices << static_cast<int>(j);
     }
     // The file format's own check, so the document never holds a scene it could not reopen.

@@ -116,8 +116,9 @@ public:
 
     // The undoable Apply Simulated Pose: every authored body takes its live pose and velocities,
     // and every joint moves with its bodies (anchors and axis with body A, a distance joint's second
-    // anchor with body B), so it holds the same points of them as in the run; hinge and slider
-    // limits then count from the applied pose, as they count from any authored pose. Null, with
+    // anchor with body B), so it holds the same points of them as in the run. What a joint takes
+    // from its pose when it is built then comes from the applied pose: hinge and slider limits
+    // count from it, and a distance joint's rest length is its length there. Null, with
     // *error saying why, when there is nothing to apply or the live state is one the scene file
     // cannot hold (a speed beyond the loader's limits, a non-finite value).
     QUndoCommand* simulatedPoseCommand(SceneDocument* document, QString* error) const;

@@ -408,7 +408,7 @@ std::optional<Viewport::JointPick> Viewport::pickJoint(const QPointF& pixel) con
         const auto anchors = jointAnchors(j);
         if (!anchors) continue;
         // Perspective keeps a segment straight on screen, so its projection is where it is drawn;
-        // one reaching behind the eye has no such projection and is skipped.
+        // one reaching behind the eye (or beyond the far plane) is not drawn and is skipped.
         const glm::vec3 a = m_camera.project(anchors->onA, w, h), b = m_camera.project(anchors->onB, w, h);
         if (a.z > 1.0f || b.z > 1.0f) continue;
         const glm::vec2 from(a), along = glm::vec2(b) - from;
@@ -992,16 +992,22 @@ void Viewport::mousePressEvent(QMouseEvent* event) {
         // Joint marks are drawn over the bodies, so a joint near the cursor takes the click (it is
         // selected on release, and a drag from it moves the camera, never a body), unless its point
         // lies inside or behind the body under the cursor, as a joint anchored at a body's centre
-        // does: then the body takes the press, to be dragged, and a click on it once it is selected
-        // reaches the joint.
+        // does: then the body takes the press, to be dragged, and a click on it once it alone is
+        // selected reaches the joint, if the joint is one of that body's.
         auto hit = pick(event->position());
+        const int hitIndex = hit ? m_simulation->sceneIndexOf(hit->body) : -1;
         if (const auto joint = pickJoint(event->position())) {
-            if (hit && hit->fraction < joint->distance) m_jointInPressedBody = joint->joint;
-            else m_clickedJoint = joint->joint;
+            if (!hit || hit->fraction >= joint->distance) {
+                m_clickedJoint = joint->joint;
+            } else if (m_document && hitIndex >= 0) {
+                const simcore::SceneJoint& hidden = m_document->joint(joint->joint);
+                if (hidden.bodyA == static_cast<std::size_t>(hitIndex) || hidden.bodyB == static_cast<std::size_t>(hitIndex))
+                    m_jointInPressedBody = joint->joint;
+            }
         }
         if (m_clickedJoint >= 0) hit.reset();
-        const int sceneIndex = hit ? m_simulation->sceneIndexOf(hit->body) : -1;
-        m_pressedBodyWasSelected = m_document && sceneIndex >= 0 && m_document->selectedBodies().contains(sceneIndex);
+        const int sceneIndex = hit ? hitIndex : -1;
+        m_pressedBodyWasSelected = m_document && sceneIndex >= 0 && m_document->selectedBodies() == QList<int>{sceneIndex};
         if (hit && (sceneIndex >= 0 || m_simulation->isPlaying())) {
             pressOnBody(event, *hit, sceneIndex);
         } else {

@@ -5,7 +5,9 @@
 // marked), sleeping bodies tinted and the debug overlays (bounds, contact points and normals). Mouse interaction:
 //   left click            select the joint whose anchor (or distance rod) is within a few
 //                         pixels, else the body under the cursor (ray cast through simcore);
-//                         Ctrl/Shift-click adds or removes it; a click on nothing clears
+//                         a joint of that body hidden inside it takes a click on the body once
+//                         the body alone is selected; Ctrl/Shift-click adds or removes it; a
+//                         click on nothing clears
 //   left drag on a body   paused: move the selection on a horizontal plane (one undo entry);
 //                         with Alt: turn it about the vertical; playing: pull it with a spring
 //   left drag elsewhere   orbit;  Shift or middle drag: pan;  wheel: zoom

@@ -90,6 +90,8 @@ void JointSolver::prepare(JointStorage& joints, const BodyStorage& bodies, const
     joints_ = &joints;
     params_ = params;
     constraints_.clear();
+    substepGeometry_.clear();  // warmStart fills them for this step's constraints
+    substepFactor_.clear();
     const float h = params.substepDt;
     soft_ = SoftConstraint::make(SoftConstraint::cappedHertz(params.joint.hertz, h), params.joint.dampingRatio, h);
 
@@ -155,6 +157,7 @@ void JointSolver::warmStart(BodyStorage& bodies) {
 }
 
 void JointSolver::solve(BodyStorage& bodies, bool useBias) {
+    assert(!useBias || substepGeometry_.size() == constraints_.size());  // warmStart came first
     for (std::size_t ci = 0; ci < constraints_.size(); ++ci) {
         const Constraint& c = constraints_[ci];
         Joint& j = joints_->joints[c.joint];
