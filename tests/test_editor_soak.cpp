@@ -8,8 +8,8 @@
 // plays what the document holds, and every history position gives back exactly the scene it had.
 // At the end, undoing everything returns the first scene and redoing everything the last.
 //
-// The run is fixed by a seed (printed; INTERPLAY_SOAK_SEED=N replays another) and a number of
-// operations (INTERPLAY_SOAK_OPERATIONS=N). A failure names the seed, the operation and the last few
+// Each run is fixed by a seed (the default, and seeds that once failed; INTERPLAY_SOAK_SEED=N runs
+// that one instead) and a number of operations (INTERPLAY_SOAK_OPERATIONS=N). A failure names the seed, the operation and the last few
 // operations before it, and saves the document's scene for a replay.
 //
 // Also here: the two editor bugs the soak found (a rename that made the file unloadable, Apply
@@ -750,6 +750,7 @@ class TestEditorSoak : public QObject {
     Q_OBJECT
 
 private slots:
+    void randomEditsWhilePlaying_data();
     void randomEditsWhilePlaying();
     void duplicateNameOfAJointedBodyIsRefused();
     void simulatedPoseOutsideTheFileLimits();
@@ -758,8 +759,20 @@ private slots:
     void oversizedFileIsRefusedUnread();
 };
 
+void TestEditorSoak::randomEditsWhilePlaying_data() {
+    QTest::addColumn<quint64>("seed");
+    if (qEnvironmentVariableIsSet("INTERPLAY_SOAK_SEED")) {
+        QTest::newRow("INTERPLAY_SOAK_SEED") << static_cast<quint64>(envInt("INTERPLAY_SOAK_SEED", 0));
+        return;
+    }
+    QTest::newRow("default seed") << static_cast<quint64>(kDefaultSeed);
+    // Seeds that once failed, kept: 6 flung bodies kilometres apart at the speed bound, and a
+    // contact pass between them overflowed float (contact_solver.cpp now keeps such lanes finite).
+    QTest::newRow("seed 6") << quint64{6};
+}
+
 void TestEditorSoak::randomEditsWhilePlaying() {
-    const auto seed = static_cast<std::uint64_t>(envInt("INTERPLAY_SOAK_SEED", static_cast<int>(kDefaultSeed)));
+    QFETCH(quint64, seed);
     const int operations = envInt("INTERPLAY_SOAK_OPERATIONS", kDefaultOperations);
     qInfo("seed %llu (INTERPLAY_SOAK_SEED), %d operations (INTERPLAY_SOAK_OPERATIONS)",
           static_cast<unsigned long long>(seed), operations);

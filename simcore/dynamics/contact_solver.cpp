@@ -63,6 +63,24 @@ struct WideBodies {
     Vec3W linearA, angularA, linearB, angularB;
 };
 
+// Gives lanes whose velocities a pass took beyond float (a contact between bodies flung kilometres
+// apart at the speed bound has arms of kilometres) their velocities from before the pass, so no inf
+// or NaN reaches a body, as the joint solver drops such a pass; returns the lanes kept. Zero times
+// a value is zero unless the value is inf or NaN, and the ordered comparison fails on NaN.
+SIMCORE_SIMD_INLINE MaskW keepFiniteLanes(WideBodies& v, const WideBodies& before) {
+    const Vec3W sum = v.linearA + v.angularA + v.linearB + v.angularB;
+    const MaskW finite = (sum.x + sum.y + sum.z) * FloatW::zero() < FloatW::splat(1.0f);
+    if (simd::all(finite)) return finite;
+    auto keep = [&](Vec3W& now, const Vec3W& old) {
+        now = {select(finite, now.x, old.x), select(finite, now.y, old.y), select(finite, now.z, old.z)};
+    };
+    keep(v.linearA, before.linearA);
+    keep(v.angularA, before.angularA);
+    keep(v.linearB, before.linearB);
+    keep(v.angularB, before.angularB);
+    return finite;
+}
+
 SIMCORE_SIMD_INLINE WideBodies gatherVelocities(const float* rows, const std::int32_t* bodyA, const std::int32_t* bodyB) {
     FloatW a[8], b[8];
     simd::gatherRows(rows, bodyA, a);
@@ -414,6 +432,7 @@ void ContactSolver::solve(BodyStorage& bodies, bool useBias) {
     const float* motion = motion_.data()->value;
     for (ManifoldBatch& c : batches_) {
         WideBodies v = gatherVelocities(rows, c.bodyA, c.bodyB);
+        const WideBodies before = v;
         const Vec3W normal = load(c.normal);
         const SymMat3W inverseInertiaA = load(c.inverseInertiaA), inverseInertiaB = load(c.inverseInertiaB);
 
@@ -465,6 +484,15 @@ void ContactSolver::solve(BodyStorage& bodies, bool useBias) {
                              inverseInertiaA, inverseInertiaB);
             }
         }
+        const MaskW kept = keepFiniteLanes(v, before);
+        if (!simd::all(kept)) {  // and their impulses, which would overflow the next warm start
+            for (int i = 0; i < c.maxPointCount; ++i) {
+                PointBatch& p = c.points[i];
+                p.normalImpulse = select(kept, p.normalImpulse, zero);
+                p.tangentImpulse1 = select(kept, p.tangentImpulse1, zero);
+                p.tangentImpulse2 = select(kept, p.tangentImpulse2, zero);
+            }
+        }
         scatterVelocities(rows, c.bodyA, c.bodyB, v);
     }
     storeVelocities(bodies);
@@ -483,6 +511,7 @@ void ContactSolver::resolveCollisions(BodyStorage& bodies) {
         for (ManifoldBatch& c : batches_) {
             if (!c.anyRestitution) continue;
             WideBodies v = gatherVelocities(rows, c.bodyA, c.bodyB);
+            const WideBodies before = v;
             const PairMotionW pairMotion = gatherMotion(motion, c.bodyA, c.bodyB);
             const Vec3W normal = load(c.normal), tangent1 = load(c.tangent1), tangent2 = load(c.tangent2);
             const SymMat3W inverseInertiaA = load(c.inverseInertiaA), inverseInertiaB = load(c.inverseInertiaB);
@@ -513,6 +542,7 @@ void ContactSolver::resolveCollisions(BodyStorage& bodies) {
                              mulAdd(angularB1, t1, angularB2 * t2), c.inverseMassA, c.inverseMassB, inverseInertiaA,
                              inverseInertiaB);
             }
+            keepFiniteLanes(v, before);
             scatterVelocities(rows, c.bodyA, c.bodyB, v);
         }
         if (!collided) break;

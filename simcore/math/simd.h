@@ -50,6 +50,7 @@ SIMCORE_SIMD_INLINE MaskW operator>(FloatW a, FloatW b) { return {_mm256_cmp_ps(
 SIMCORE_SIMD_INLINE MaskW operator<(FloatW a, FloatW b) { return {_mm256_cmp_ps(a.v, b.v, _CMP_LT_OQ)}; }
 SIMCORE_SIMD_INLINE MaskW operator&(MaskW a, MaskW b) { return {_mm256_and_ps(a.v, b.v)}; }
 SIMCORE_SIMD_INLINE bool any(MaskW m) { return _mm256_movemask_ps(m.v) != 0; }
+SIMCORE_SIMD_INLINE bool all(MaskW m) { return _mm256_movemask_ps(m.v) == 0xFF; }
 SIMCORE_SIMD_INLINE FloatW select(MaskW m, FloatW ifTrue, FloatW ifFalse) { return {_mm256_blendv_ps(ifFalse.v, ifTrue.v, m.v)}; }
 
 // Rows of 8 floats (32-byte aligned) at rows + 8 * index[lane] <-> 8 wide values, one per column.
@@ -120,6 +121,7 @@ SIMCORE_SIMD_INLINE MaskW operator>(FloatW a, FloatW b) { return {_mm_cmpgt_ps(a
 SIMCORE_SIMD_INLINE MaskW operator<(FloatW a, FloatW b) { return {_mm_cmplt_ps(a.v, b.v)}; }
 SIMCORE_SIMD_INLINE MaskW operator&(MaskW a, MaskW b) { return {_mm_and_ps(a.v, b.v)}; }
 SIMCORE_SIMD_INLINE bool any(MaskW m) { return _mm_movemask_ps(m.v) != 0; }
+SIMCORE_SIMD_INLINE bool all(MaskW m) { return _mm_movemask_ps(m.v) == 0xF; }
 SIMCORE_SIMD_INLINE FloatW select(MaskW m, FloatW ifTrue, FloatW ifFalse) {
     return {_mm_or_ps(_mm_and_ps(m.v, ifTrue.v), _mm_andnot_ps(m.v, ifFalse.v))};
 }
@@ -176,6 +178,7 @@ SIMCORE_SIMD_INLINE MaskW operator>(FloatW a, FloatW b) { return {a.v > b.v}; }
 SIMCORE_SIMD_INLINE MaskW operator<(FloatW a, FloatW b) { return {a.v < b.v}; }
 SIMCORE_SIMD_INLINE MaskW operator&(MaskW a, MaskW b) { return {a.v && b.v}; }
 SIMCORE_SIMD_INLINE bool any(MaskW m) { return m.v; }
+SIMCORE_SIMD_INLINE bool all(MaskW m) { return m.v; }
 SIMCORE_SIMD_INLINE FloatW select(MaskW m, FloatW ifTrue, FloatW ifFalse) { return m.v ? ifTrue : ifFalse; }
 
 SIMCORE_SIMD_INLINE void gatherRows(const float* rows, const std::int32_t* index, FloatW out[8]) {
