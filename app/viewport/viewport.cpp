@@ -796,8 +796,9 @@ std::vector<Viewport::OverlayVertex> Viewport::overlayLines() const {
     }
     // Joints: from each body's centre to the joint's point in the world (the anchor, or a distance
     // joint's second point, fixed for a joint to the world: a pendulum shows its rod), or between
-    // the two bodies' centres. Selected joints are drawn in the selection colour, with their live
-    // anchor points marked and their hinge or slider axis drawn through the anchor.
+    // the two bodies' centres, with a small cross at the live anchor, where a click picks the joint.
+    // Selected joints are drawn in the selection colour, with both live anchor points marked large
+    // and their hinge or slider axis drawn through the anchor.
     const auto& ids = m_simulation->bodyIds();
     const auto centreOf = [&](std::size_t sceneIndex) -> std::optional<glm::vec3> {
         if (sceneIndex >= ids.size() || !world->contains(ids[sceneIndex])) return std::nullopt;
@@ -813,11 +814,13 @@ std::vector<Viewport::OverlayVertex> Viewport::overlayLines() const {
             joint.joint.type == simcore::JointType::Distance ? joint.joint.anchorB : joint.joint.anchor;
         const auto b = joint.bodyB ? centreOf(*joint.bodyB) : std::optional<glm::vec3>(fixedPoint);
         if (a && b) addLine(*a, *b, color);
-        if (!selected) continue;
         const auto anchors = jointAnchors(j);
         if (!anchors) continue;
-        addCross(anchors->onA, kJointMarkSize, color);
-        addCross(anchors->onB, kJointMarkSize, color);
+        const bool distance = joint.joint.type == simcore::JointType::Distance;
+        const float mark = selected ? kJointMarkSize : 0.5f * kJointMarkSize;
+        addCross(anchors->onA, mark, color);
+        if (selected || distance) addCross(anchors->onB, mark, color);
+        if (!selected) continue;
         if (joint.joint.type == simcore::JointType::Hinge || joint.joint.type == simcore::JointType::Slider) {
             addLine(anchors->onA - anchors->axis * kJointAxisLength, anchors->onA + anchors->axis * kJointAxisLength,
                     color);
