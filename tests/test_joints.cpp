@@ -120,8 +120,8 @@ private slots:
     void heavyBobOnLightChain_data();
     void heavyBobOnLightChain();
     void farAnchorsGainNoEnergy();
-    void farAnchorScenesDoNotSpeedUp_data();
-    void farAnchorScenesDoNotSpeedUp();
+    void kinematicSpunHingeDoesNotSpeedUp();
+    void embeddedJointedBodiesGainNoEnergy();
     void tornJointsStayFinite_data();
     void tornJointsStayFinite();
     void jointedPairSleepsAndWakesTogether();
@@ -519,47 +519,55 @@ void TestJoints::farAnchorsGainNoEnergy() {
 }
 
 // 10c. The two scenes of tests/data/nonfinite/ that once overflowed through joints with far
-// anchors do not speed up. kinematic_spun_hinge, 20000 steps (5.6 min): the hinge's anchor circles
+// anchors gain no energy. kinematic_spun_hinge, 20000 steps (5.6 min): the hinge's anchor circles
 // at 4 m/s on the kinematic box, and the capsules' centre lies 4 m across from it; in the box's
 // turning frame the pair swings about the anchor with no more energy than it started with, at most
 // about 2 rad/s relative to the box, so no point of it passes 4 + 3 x 4 = 16 m/s: bound 20 m/s
-// (measured 16.7 m/s). joint_far_anchors, 1500 steps: a capsule that starts inside the ground
-// leaves through its underside and the free slider lets it fall for ever, so its bound is free
-// fall from rest plus what pushing two embedded bodies out of the ground (3 m/s each) can pass on
-// through the joints, g t + 10 m/s (measured at most g t + 5.02 m/s; 217 m/s at step 1500). Later
-// its slide reaches kilometres, a lever arm float cannot hold (see tests/data/nonfinite/README.md).
-// Before, both flew apart at the speed bound (1e5 m/s), the first by step 300, the second by 100.
-void TestJoints::farAnchorScenesDoNotSpeedUp_data() {
-    QTest::addColumn<QString>("file");
-    QTest::addColumn<bool>("freeFall");
-    QTest::addColumn<int>("steps");
-    QTest::newRow("kinematic_spun_hinge") << "kinematic_spun_hinge.json" << false << 20000;
-    QTest::newRow("joint_far_anchors") << "joint_far_anchors.json" << true << 1500;
-}
-
-void TestJoints::farAnchorScenesDoNotSpeedUp() {
-    QFETCH(QString, file);
-    QFETCH(bool, freeFall);
-    QFETCH(int, steps);
-    const auto loaded = loadSceneFile((QString(INTERPLAY_SOURCE_DIR) + "/tests/data/nonfinite/" + file).toStdString());
+// (measured 16.7 m/s). The kinematic box drives it, so its energy is not conserved; speed is the
+// measure. Before, it flew apart at the speed bound (1e5 m/s) by step 300.
+void TestJoints::kinematicSpunHingeDoesNotSpeedUp() {
+    const auto loaded = loadSceneFile(std::string(INTERPLAY_SOURCE_DIR) + "/tests/data/nonfinite/kinematic_spun_hinge.json");
     QVERIFY(loaded.ok());
     BuiltWorld built = buildWorld(*loaded.scene);
     World& world = built.world;
-    const float gravity = glm::length(world.settings().gravity);
-    float worstExcess = -1e30f, fastest = 0.0f;
-    for (int i = 0; i < steps; ++i) {
+    float fastest = 0.0f;
+    for (int i = 0; i < 20000; ++i) {
         world.step();
-        const float bound = freeFall ? gravity * float(world.simulatedTime()) + 10.0f : 20.0f;
-        for (const BodyId id : world.bodyIds()) {
-            const float speed = glm::length(world.linearVelocity(id));
-            fastest = std::max(fastest, speed);
-            worstExcess = std::max(worstExcess, speed - bound);
-        }
+        for (const BodyId id : world.bodyIds()) fastest = std::max(fastest, glm::length(world.linearVelocity(id)));
     }
     QVERIFY(!world.findNonFiniteBody());
-    qInfo("%s: fastest %.1f m/s, %.1f m/s under its bound at the closest", qPrintable(file), double(fastest),
-          double(-worstExcess));
-    QVERIFY2(worstExcess < 0.0f, qPrintable(QString("%1 m/s over the bound").arg(worstExcess)));
+    qInfo("kinematic_spun_hinge: fastest %.1f m/s (bound 20)", double(fastest));
+    QVERIFY2(fastest < 20.0f, qPrintable(QString("%1 m/s").arg(fastest)));
+}
+
+// joint_far_anchors, 1500 steps: a capsule that starts inside the ground is pushed out through its
+// underside, and the free slider lets it fall for ever; a heavy box fixed to a light hull 7 m away
+// lands on one corner, which flings the hull at 31 m/s by the lever (the impact takes 7 kJ out).
+// Closed but for the push out of the ground, which is over within the first 10 steps, so the
+// mechanical energy (kinetic plus m g y) never rises above its highest in those steps. Before the
+// velocity bound and the dropped overflowing passes, it flew apart at 1e5 m/s by step 100; later
+// its slide reaches kilometres, a lever arm float cannot hold (see tests/data/nonfinite/README.md).
+void TestJoints::embeddedJointedBodiesGainNoEnergy() {
+    const auto loaded = loadSceneFile(std::string(INTERPLAY_SOURCE_DIR) + "/tests/data/nonfinite/joint_far_anchors.json");
+    QVERIFY(loaded.ok());
+    BuiltWorld built = buildWorld(*loaded.scene);
+    World& world = built.world;
+    const Vec3 gravity = world.settings().gravity;
+    auto mechanicalEnergy = [&] {
+        double energy = world.kineticEnergy();
+        for (const BodyId id : world.bodyIds()) energy -= world.mass(id) * glm::dot(gravity, world.centerOfMass(id));
+        return energy;
+    };
+    constexpr int kPushSteps = 10;
+    double afterPush = -1e300, highest = -1e300;
+    for (int i = 0; i < 1500; ++i) {
+        world.step();
+        QVERIFY(!world.findNonFiniteBody());
+        double& slot = i < kPushSteps ? afterPush : highest;
+        slot = std::max(slot, mechanicalEnergy());
+    }
+    qInfo("joint_far_anchors: energy at most %.1f J after the push, %.1f J during it", highest, afterPush);
+    QVERIFY2(highest <= afterPush, qPrintable(QString("gained %1 J").arg(highest - afterPush)));
 }
 
 // 10d. Joints torn kilometres apart stay finite. The editor soak's case: an 18 kg box on a slider

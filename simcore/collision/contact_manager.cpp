@@ -124,6 +124,7 @@ void ContactManager::updateManifolds(const BodyStorage& bodies, const BroadPhase
         if (!reach.overlaps(bodies.bounds[b])) {
             contact.manifold.pointCount = 0;
             contact.impulses = {};
+            contact.frictionImpulse = {};
             ++c;
             continue;
         }

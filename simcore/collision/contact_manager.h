@@ -16,8 +16,14 @@
 namespace simcore {
 
 struct ContactImpulse {
-    float normal = 0.0f;    // N s, >= 0
-    Vec3 friction{0.0f};    // N s, world frame, in the contact plane (the solver's tangents change)
+    float normal = 0.0f;  // N s, >= 0
+};
+
+// Friction acts on a manifold as a whole, at its friction centre (see ContactSolver), so its
+// impulses belong to the contact rather than to a point.
+struct FrictionImpulse {
+    Vec3 linear{0.0f};   // N s, world frame, in the contact plane (the solver's tangents change)
+    float twist = 0.0f;  // N m s, about the normal
 };
 
 struct Contact {
@@ -27,6 +33,7 @@ struct Contact {
     bool dynamicPair = false;            // both bodies dynamic at creation: counts toward their contact cap
     ContactManifold manifold;
     std::array<ContactImpulse, kMaxManifoldPoints> impulses{};
+    FrictionImpulse frictionImpulse;
 };
 
 // Friction combines by geometric mean (a frictionless surface makes any pair frictionless) and

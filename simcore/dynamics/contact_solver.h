@@ -1,13 +1,15 @@
 #pragma once
 // Sequential impulses on contact manifolds: accumulated impulses with clamping, warm starting,
-// Coulomb friction on two tangents bounded by the normal impulse, restitution above a velocity
-// threshold, speculative contacts, and soft-step or Baumgarte position correction.
+// Coulomb friction per manifold (two tangent rows at the friction centre and a twist row, bounded
+// by the summed normal impulse), restitution above a velocity threshold, speculative contacts,
+// and soft-step or Baumgarte position correction.
 //
 // Within one World::step the solver is used as:
 //   prepare (once) -> for each substep { [resolveCollisions, first substep only], warmStart,
 //   solve(useBias=true) x N, [positions move], [resolveCollisions], relax = solve(useBias=false)
 //   x M } -> storeImpulses,
-// with resolveCollisions only when usesRestitution().
+// with resolveCollisions only when usesRestitution(). Friction is solved in the relax passes (in
+// the velocity passes when there are none).
 //
 // Restitution is a collision pass before the contact solve (as in Guendelman, Bridson and Fedkiw
 // 2003): every point that closes faster than the restitution threshold and would touch within a
@@ -65,12 +67,12 @@ private:
     static constexpr int kMaxCollisionPasses = 8;
 
     // One contact point in every lane: anchors relative to each centre of mass at prepare (world
-    // axes), effective masses and accumulated impulses of its three rows.
+    // axes), the normal row's effective mass and accumulated impulse.
     struct PointBatch {
         FloatW anchorA[3], anchorB[3];
         FloatW baseSeparation;  // m, at prepare
-        FloatW normalMass, tangentMass1, tangentMass2;
-        FloatW normalImpulse, tangentImpulse1, tangentImpulse2;
+        FloatW leverArm;        // m, from the friction centre: the reach of its twist friction
+        FloatW normalMass, normalImpulse;
     };
     // kLanes manifolds. Unused lanes and points have zero masses and so change nothing.
     struct ManifoldBatch {
@@ -79,6 +81,15 @@ private:
         FloatW inverseInertiaA[6], inverseInertiaB[6];  // world, at prepare: xx yy zz xy xz yz
         FloatW normal[3], tangent1[3], tangent2[3];     // normal from A to B
         FloatW friction, restitution;
+        // Friction acts on the manifold as a whole (as in Box3D): a two-row block at the friction
+        // centre, the mean of the points, bounded by friction times the summed normal impulse, and
+        // a twist row about the normal bounded by friction times each point's impulse times its
+        // lever arm. Per-point friction rows, solved one after another, let the order of the
+        // corners turn a resting box and couple the side faces of neighbours in a pyramid.
+        FloatW centerA[3], centerB[3];               // the friction centre from each centre of mass
+        FloatW tangentMass[3];                       // inverse of the 2x2 block: 11, 22, 12
+        FloatW tangentImpulse1, tangentImpulse2;     // N s
+        FloatW twistMass, twistImpulse;              // 1 / (n . (IA^-1 + IB^-1) n); N m s
         // Sphere and capsule radii (0 for other shapes). Rolling turns a round body's surface point
         // away from the contact without changing the gap, so the separation follows the anchors'
         // projections on the core (centre or segment) instead.
