@@ -55,6 +55,11 @@ private slots:
     void fastImpactIsMetAtTheSurface_data();
     void fastImpactIsMetAtTheSurface();
     void ballReboundsToQuarterHeight();
+    void elasticBallReturnsToItsHeight_data();
+    void elasticBallReturnsToItsHeight();
+    void boxLandingFlatBouncesAsAWhole();
+    void elasticTumblingBoxGainsNoEnergy_data();
+    void elasticTumblingBoxGainsNoEnergy();
     void benchStacksStand_data();
     void benchStacksStand();
     void heavyOnLightHolds();
@@ -282,12 +287,123 @@ void TestContacts::ballReboundsToQuarterHeight() {
     }
     QVERIFY(bounced);
     qInfo("ball apex %.4f m above rest (expected 0.25 m)", apex);
-    // 15 %: the restitution pass uses the approach speed at the start of the impact step, which is
-    // up to g dt = 0.16 m/s (3.7 %, so 7.4 % in height) below the true impact speed; the soft
-    // contact's push-out and the step's sampling of the apex (1/2 g dt^2 = 1.4 mm) add a little.
-    // A missing threshold or a bounce of e = 1 would give 1 m, e^2 vs e confusion 0.5 m.
-    QVERIFY2(std::abs(apex - 0.25f) < 0.15f * 0.25f, qPrintable(QString("apex %1 m, expected 0.25 m").arg(apex)));
+    // The impact reverses the ball up to one substep of travel before the surfaces meet (v h =
+    // 1.8 cm at 4.43 m/s); what e < 1 takes out is then taken that high, so the apex is high by up
+    // to (1 - e^2) v h = 1.4 cm, and the step samples it within 1/2 g dt^2 = 1.4 mm. A missing
+    // threshold or a bounce of e = 1 would give 1 m, e^2 vs e confusion 0.5 m.
+    const float bound = (1.0f - 0.25f) * std::sqrt(2.0f * kG * 1.0f) / 240.0f + 0.5f * kG / (60.0f * 60.0f);
+    QVERIFY2(std::abs(apex - 0.25f) < bound, qPrintable(QString("apex %1 m, expected 0.25 m within %2").arg(apex).arg(bound)));
     QVERIFY(world.effectUsage().ran(Effect::Restitution));
+}
+
+// The symplectic-Euler invariant of a body in uniform gravity: with the velocity taken half a substep
+// h before the position, 1/2 m v^2 + 1/2 w.I w - m g.x + 1/2 h m g.v is exactly constant in free
+// flight (plain kinetic plus potential energy swings by 1/2 h m g v, 0.4 % of a 5 m drop), so it
+// shows what an impact adds or takes.
+double flightInvariant(const World& world, BodyId id) {
+    const Vec3 g = world.settings().gravity;
+    const float h = world.settings().timeStep / static_cast<float>(world.settings().substeps);
+    const double m = world.mass(id);
+    return totalEnergy(world) + 0.5 * h * m * glm::dot(g, world.linearVelocity(id));
+}
+
+// A ball with restitution 1 dropped 5 m onto a plane comes back to 5 m, bounce after bounce. The
+// impact reverses the velocity the ball has at the instant of the positions, which symplectic
+// Euler holds half a substep of gravity away from the stored one; reversing the stored one took
+// g h |v| out of each bounce (v h = 4.1 cm a bounce at 4 substeps, 8 % over ten). 0.5 %: the
+// apex is sampled once a step (1/2 g dt^2 = 1.4 mm, 0.03 %) and the reversal comes up to a
+// substep early, which restitution 1 forgives.
+void TestContacts::elasticBallReturnsToItsHeight_data() {
+    QTest::addColumn<int>("substeps");
+    for (int substeps : {1, 2, 4, 8}) QTest::addRow("%d substeps", substeps) << substeps;
+}
+
+void TestContacts::elasticBallReturnsToItsHeight() {
+    QFETCH(int, substeps);
+    WorldSettings settings = awakeSettings();
+    settings.substeps = substeps;
+    World world(settings);
+    addGround(world, 0.6f, 1.0f);
+    constexpr float kDrop = 5.0f;
+    BodyCreationSettings ball;
+    ball.shape = Shape::sphere(0.5f);
+    ball.position = Vec3(0.0f, kDrop + 0.5f, 0.0f);
+    ball.mass = 1.0f;
+    ball.restitution = 1.0f;
+    const BodyId id = world.createBody(ball);
+    int bounces = 0;
+    float worst = 0.0f, previousVy = 0.0f;
+    for (int i = 0, n = stepsFor(world, 30.0f); i < n && bounces < 10; ++i) {
+        world.step();
+        const float vy = world.linearVelocity(id).y;
+        if (previousVy > 0.0f && vy <= 0.0f) {
+            ++bounces;
+            worst = std::max(worst, std::abs(world.position(id).y - 0.5f - kDrop) / kDrop);
+        }
+        previousVy = vy;
+    }
+    qInfo("%d bounces, apex at worst %.4f %% from %.0f m", bounces, 100.0 * worst, double(kDrop));
+    QCOMPARE(bounces, 10);
+    QVERIFY2(worst < 0.005f, qPrintable(QString("apex %1 % off").arg(100.0f * worst)));
+}
+
+// A cube dropped flat from 40 m with restitution 1 bounces as a whole: its four corners meet the
+// floor together, and their impacts are one impact at their centre. Solved corner by corner, they
+// set it spinning and it came back to 6 m. 95 %: the bound; measured 99.99 %.
+void TestContacts::boxLandingFlatBouncesAsAWhole() {
+    World world(awakeSettings());
+    addGround(world, 0.6f, 1.0f);
+    constexpr float kDrop = 40.0f;
+    BodyCreationSettings box = cube(Vec3(0.0f, kDrop + 0.5f, 0.0f));
+    box.restitution = 1.0f;
+    const BodyId id = world.createBody(box);
+    bool bounced = false;
+    float apex = 0.0f, fastestSpin = 0.0f;
+    for (int i = 0, n = stepsFor(world, 7.0f); i < n; ++i) {
+        world.step();
+        fastestSpin = std::max(fastestSpin, glm::length(world.angularVelocity(id)));
+        if (world.linearVelocity(id).y > 0.0f) bounced = true;
+        if (bounced) apex = std::max(apex, world.position(id).y - 0.5f);
+    }
+    qInfo("apex %.3f m of %.0f m, fastest spin %.4f rad/s", apex, double(kDrop), fastestSpin);
+    QVERIFY(bounced);
+    QVERIFY2(apex >= 0.95f * kDrop, qPrintable(QString("came back to %1 m").arg(apex)));
+    QVERIFY2(fastestSpin < 0.1f, qPrintable(QString("spun at %1 rad/s").arg(fastestSpin)));
+}
+
+// A box dropped tilted with restitution 1 tumbles from bounce to bounce; an impact may pass energy
+// between spin and flight, never add it. Impacts take the body's inertia and arms as they are at
+// the impact: with those of the step's start, a box spinning at 30 rad/s (half a radian a step)
+// gained up to 30 % in 10 s. Bound 0.1 % of the flight invariant; measured at most 0.005 %.
+void TestContacts::elasticTumblingBoxGainsNoEnergy_data() {
+    QTest::addColumn<float>("angle");
+    QTest::addColumn<float>("friction");
+    for (float angle : {0.05f, 0.3f, 0.7f, 1.2f, 2.0f})
+        for (float friction : {0.0f, 0.5f}) QTest::addRow("%.2f rad, friction %.1f", angle, friction) << angle << friction;
+}
+
+void TestContacts::elasticTumblingBoxGainsNoEnergy() {
+    QFETCH(float, angle);
+    QFETCH(float, friction);
+    World world(awakeSettings());
+    addGround(world, friction, 1.0f);
+    BodyCreationSettings box;
+    box.shape = Shape::box(Vec3(0.5f, 0.25f, 0.4f));
+    box.position = Vec3(0.0f, 5.0f, 0.0f);
+    box.orientation = glm::angleAxis(angle, glm::normalize(Vec3(1.0f, 0.3f, 0.5f)));
+    box.mass = 1.0f;
+    box.friction = friction;
+    box.restitution = 1.0f;
+    const BodyId id = world.createBody(box);
+    const double start = flightInvariant(world, id);
+    double highest = start;
+    for (int i = 0, n = stepsFor(world, 10.0f); i < n; ++i) {
+        world.step();
+        highest = std::max(highest, flightInvariant(world, id));
+    }
+    QVERIFY(!world.findNonFiniteBody());
+    qInfo("energy at most %+.4f %% of the start", 100.0 * (highest - start) / start);
+    QVERIFY2(highest <= start * 1.001, qPrintable(QString("gained %1 %").arg(100.0 * (highest - start) / start)));
 }
 
 // -------------------------------------------------------------------------------------------------

@@ -40,6 +40,7 @@ public:
         float substepDt = 1.0f / 240.0f;
         bool friction = true;
         bool restitution = true;
+        Vec3 gravity{0.0f};  // m/s^2 when the gravity effect runs: impacts account for it (resolveCollisions)
         SolverSettings solver;
         ContactSettings contact;
     };
@@ -49,7 +50,10 @@ public:
     void prepare(const std::vector<Contact>& contacts, const BodyStorage& bodies, const Params& params);
     void warmStart(BodyStorage& bodies);
     void solve(BodyStorage& bodies, bool useBias);
-    void resolveCollisions(BodyStorage& bodies);
+    // When the collision pass runs: after the substep's velocity update and before the position
+    // update (the first substep), or after the position update.
+    enum class ImpactTiming { BeforePositions, AfterPositions };
+    void resolveCollisions(BodyStorage& bodies, ImpactTiming timing);
     void storeImpulses(std::vector<Contact>& contacts) const;
 
     std::size_t constraintCount() const { return constraintCount_; }
@@ -116,6 +120,8 @@ private:
     void loadVelocities(const BodyStorage& bodies);
     void loadMotion(const BodyStorage& bodies);
     void storeVelocities(BodyStorage& bodies) const;
+    void currentInverseInertia(const std::int32_t (&solverBodies)[kLanes], const BodyStorage& bodies,
+                               FloatW (&inverseInertia)[6]) const;
 
     std::vector<ManifoldBatch> batches_;       // colour by colour
     std::vector<BodyRow> velocities_, motion_;  // by solver body

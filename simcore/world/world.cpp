@@ -315,6 +315,7 @@ void World::step() {
         params.substepDt = h;
         params.friction = settings_.effects[Effect::Friction];
         params.restitution = settings_.effects[Effect::Restitution];
+        params.gravity = velocityParams.gravity;
         params.solver = settings_.solver;
         params.contact = settings_.contact;
         contactSolver_.prepare(contactManager_.contacts(), bodies_, params);
@@ -342,7 +343,7 @@ void World::step() {
         }
         if (solveContacts || solveJoints) {
             ScopedStageTimer timer(slot(Stage::SolveConstraints));
-            if (bounce && substep == 0) contactSolver_.resolveCollisions(bodies_);
+            if (bounce && substep == 0) contactSolver_.resolveCollisions(bodies_, ContactSolver::ImpactTiming::BeforePositions);
             if (solveJoints) jointSolver_.warmStart(bodies_);
             if (solveContacts) contactSolver_.warmStart(bodies_);
             for (int i = 0; i < settings_.solver.velocityIterations; ++i) {
@@ -358,7 +359,7 @@ void World::step() {
             // Before relax, which would slow a body about to hit down to the speed that just closes
             // the gap (speculative contact) and so take away the impact the bounce needs.
             ScopedStageTimer timer(slot(Stage::SolveConstraints));
-            contactSolver_.resolveCollisions(bodies_);
+            contactSolver_.resolveCollisions(bodies_, ContactSolver::ImpactTiming::AfterPositions);
         }
         if (relax || solveJoints) {
             ScopedStageTimer timer(slot(Stage::SolveConstraints));
