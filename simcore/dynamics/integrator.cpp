@@ -90,8 +90,6 @@ std::uint32_t BodyIntegrator::integrateVelocities(BodyStorage& bodies, Integrato
 
         bodies.linearVelocity[i] = v * params.linearRetention;
         bodies.angularVelocity[i] = w * params.angularRetention;
-        bodies.force[i] = Vec3(0.0f);
-        bodies.torque[i] = Vec3(0.0f);
     }
     return bounded;
 }
