@@ -25,6 +25,7 @@ public:
     // than zero means the simulation is unstable.
     //
     // Updates velocities; the integrators that move by the start-of-substep velocity keep a copy.
+    // Applied forces and torques act in every substep; the world clears them when the step ends.
     std::uint32_t integrateVelocities(BodyStorage& bodies, Integrator method, const VelocityIntegration& params, float dt);
     // Advances centres of mass and orientations, renormalises orientations and refreshes world-
     // frame inverse inertia. `method` must be the one given to this substep's integrateVelocities.

@@ -262,7 +262,7 @@ bool World::needs(Effect effect, const Activity& activity) const {
 //   3. islands (through contacts and joints): bodies touching an awake island wake up with it
 //   4. prepare contact and joint constraints (once per step, with last step's impulses)
 //   for each substep of h = timeStep / substeps:
-//     5. integrate velocities: gravity, external forces, gyroscopic torque, damping
+//     5. integrate velocities: gravity, applied forces, gyroscopic torque, damping
 //     6. warm start, then velocity iterations with position correction (joints, then contacts);
 //        collisions (restitution) first in the first substep
 //     7. integrate positions: centres of mass and orientations, by the chosen integrator
@@ -271,6 +271,7 @@ bool World::needs(Effect effect, const Activity& activity) const {
 //   9. impulses stored for the next step's warm start
 //  10. continuous collision: a fast body that would pass through another stops at the time of impact
 //  11. sleep: islands that stayed slow long enough stop being simulated
+//  12. applied forces and torques, having acted over the whole step, are cleared
 // Stages 1-4, 6 and 8-9 run only when contacts or joints are needed; see needs() for every effect.
 void World::step() {
     const auto stepStart = std::chrono::steady_clock::now();
@@ -390,6 +391,8 @@ void World::step() {
                                      [this](std::size_t i) { setAwake(i, false); });
     }
 
+    clearAppliedForces();
+
     proxiesStale_ = proxiesStale_ || (!contacts && activity.anyAwakeDynamic);
 
     if (gravity) countEffect(Effect::Gravity);
@@ -421,6 +424,11 @@ void World::step() {
     profile.totalMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - stepStart).count();
     lastProfile_ = profile;
+}
+
+void World::clearAppliedForces() {
+    std::fill(bodies_.force.begin(), bodies_.force.end(), Vec3(0.0f));
+    std::fill(bodies_.torque.begin(), bodies_.torque.end(), Vec3(0.0f));
 }
 
 std::size_t World::updateBroadPhase(float dt) {

@@ -92,8 +92,10 @@ public:
     void setTransform(BodyId id, const Vec3& position, const Quat& orientation);
     void setLinearVelocity(BodyId id, const Vec3& velocity);
     void setAngularVelocity(BodyId id, const Vec3& velocity);
-    void addForce(BodyId id, const Vec3& force);                      // at the centre of mass, until next step (N)
-    void addTorque(BodyId id, const Vec3& torque);                    // until next step (N m)
+    // A force or torque acts over the next step, in every substep, and is cleared when it ends:
+    // a constant one is added before every step.
+    void addForce(BodyId id, const Vec3& force);                      // at the centre of mass (N)
+    void addTorque(BodyId id, const Vec3& torque);                    // N m
     void addImpulse(BodyId id, const Vec3& impulse, const Vec3& worldPoint);  // N s, applied now
     void wake(BodyId id);
 
@@ -138,6 +140,7 @@ private:
     std::size_t indexOf(BodyId id) const;  // dense index; throws std::out_of_range for a stale id
     std::size_t indexOf(JointId id) const;
     void buildIslandsAndWake();            // islands over contacts and joints; touched islands wake
+    void clearAppliedForces();             // the step is over: added forces and torques are spent
     void wakeIndex(std::size_t i);
 
     WorldSettings settings_;
