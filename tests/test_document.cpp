@@ -83,6 +83,7 @@ private slots:
     void reorderBodyUndoRedo();
     void jointsFollowTheirBodies();
     void changeBodiesUndoRedo();
+    void rollingResistanceEditsMergeUndoAndSave();
     void continuousEditsMergeIntoOneEntry();
     void editBackToTheStartIsDropped();
     void changeSettingsUndoRedoAndMerge();
@@ -236,6 +237,37 @@ void TestDocument::changeBodiesUndoRedo() {
     // A change to identical values is not history.
     m_document.undoStack()->push(new ChangeBodies(&m_document, "Nothing", BodyField::Friction, {2}, {m_document.body(2)}));
     QCOMPARE(m_document.undoStack()->count(), 1);
+}
+
+void TestDocument::rollingResistanceEditsMergeUndoAndSave() {
+    const simcore::SceneBody original = m_document.body(2);
+    QCOMPARE(original.body.rollingResistance, 0.0f);
+    // Continuous edits of the field (a scrub) are one entry holding the first value and the last.
+    for (float c : {0.01f, 0.02f, 0.05f}) {
+        simcore::SceneBody changed = m_document.body(2);
+        changed.body.rollingResistance = c;
+        m_document.undoStack()->push(new ChangeBodies(&m_document, "Change Rolling Resistance", BodyField::RollingResistance,
+                                                      {2}, {changed}, true));
+    }
+    QCOMPARE(m_document.undoStack()->count(), 1);
+    QCOMPARE(m_document.body(2).body.rollingResistance, 0.05f);
+    QVERIFY(m_document.isModified());
+    // Only rolling resistance differs, and that is a difference: undo gives the original back.
+    QVERIFY(!interplay::sameSceneBody(m_document.body(2), original));
+    m_document.undoStack()->undo();
+    QVERIFY(interplay::sameSceneBody(m_document.body(2), original));
+    QVERIFY(!m_document.isModified());
+    m_document.undoStack()->redo();
+    QCOMPARE(m_document.body(2).body.rollingResistance, 0.05f);
+
+    // It is saved and read back.
+    const QString path = m_dir.filePath("rolling.json");
+    QString error;
+    QVERIFY2(m_document.save(path, &error), qPrintable(error));
+    SceneDocument loaded;
+    QVERIFY2(loaded.load(path, &error), qPrintable(error));
+    QCOMPARE(loaded.body(2).body.rollingResistance, 0.05f);
+    QCOMPARE(text(loaded.scene()), text(m_document.scene()));
 }
 
 void TestDocument::continuousEditsMergeIntoOneEntry() {
@@ -625,6 +657,25 @@ void TestDocument::inspectorEditsEverySelectedBody() {
     for (int i : {1, 2, 3}) QCOMPARE(m_document.body(i).body.restitution, 0.25f);
     QCOMPARE(m_document.body(4).body.restitution, 0.0f);
 
+    // Rolling resistance, next to it, the same way.
+    interplay::NumberField* rolling = inspector.numberField("rollingResistance");
+    QVERIFY(rolling);
+    QCOMPARE(rolling->text(), QString::number(0.0));
+    typeInto(rolling, "0.05");
+    QCOMPARE(m_document.undoStack()->count(), 2);
+    QCOMPARE(m_document.undoStack()->undoText(), QString("Change Rolling Resistance of 3 Bodies"));
+    for (int i : {1, 2, 3}) QCOMPARE(m_document.body(i).body.rollingResistance, 0.05f);
+    QCOMPARE(m_document.body(4).body.rollingResistance, 0.0f);
+    m_document.setSelectedBodies({3, 4});  // 0.05 and 0: mixed
+    QVERIFY(rolling->text().isEmpty());
+    QCOMPARE(rolling->placeholderText(), QString("mixed"));
+    m_document.setSelectedBodies({1, 2, 3});
+    QCOMPARE(rolling->text(), QString::number(0.05f));
+    m_document.undoStack()->undo();
+    for (int i : {1, 2, 3}) QCOMPARE(m_document.body(i).body.rollingResistance, 0.0f);
+    QCOMPARE(rolling->text(), QString::number(0.0));
+    m_document.setSelectedBodies({1, 2, 3});
+
     // Differing values show as "mixed": the x positions of a row of bodies.
     QVERIFY(inspector.numberField("position.x")->text().isEmpty());
     QCOMPARE(inspector.numberField("position.x")->placeholderText(), QString("mixed"));
@@ -643,6 +694,9 @@ void TestDocument::inspectorRejectsBadInput_data() {
     QTest::newRow("NaN friction") << "friction" << "nan" << "not a number";
     QTest::newRow("negative friction") << "friction" << "-0.5" << "between";
     QTest::newRow("restitution above 1") << "restitution" << "1.5" << "between";
+    QTest::newRow("negative rolling resistance") << "rollingResistance" << "-0.1" << "between";
+    QTest::newRow("NaN rolling resistance") << "rollingResistance" << "nan" << "not a number";
+    QTest::newRow("rolling resistance beyond the format's range") << "rollingResistance" << "150" << "between";
     QTest::newRow("negative mass") << "mass" << "-2" << "between";
     QTest::newRow("density beyond the format's range") << "mass" << "5e7" << "between";  // the box is given by density
     QTest::newRow("zero half extent") << "halfExtents.x" << "0" << "between";

@@ -344,6 +344,8 @@ void TestDynamics::invalidCreationSettingsAreRejectedByName_data() {
     QTest::newRow("negative friction") << 5 << "friction";
     QTest::newRow("restitution above one") << 6 << "restitution";
     QTest::newRow("infinite velocity") << 7 << "linearVelocity";
+    QTest::newRow("negative rolling resistance") << 8 << "rollingResistance";
+    QTest::newRow("NaN rolling resistance") << 9 << "rollingResistance";
 }
 
 void TestDynamics::invalidCreationSettingsAreRejectedByName() {
@@ -359,6 +361,8 @@ void TestDynamics::invalidCreationSettingsAreRejectedByName() {
         case 5: b.friction = -0.1f; break;
         case 6: b.restitution = 1.5f; break;
         case 7: b.linearVelocity.x = INFINITY; break;
+        case 8: b.rollingResistance = -0.01f; break;
+        case 9: b.rollingResistance = std::nanf(""); break;
     }
     World world;
     try {

@@ -531,6 +531,7 @@ private:
                 break;
             case BodyField::Friction: s.friction = m_random.uniform(0.0f, 1.2f); break;
             case BodyField::Restitution: s.restitution = m_random.uniform(0.0f, 1.0f); break;
+            case BodyField::RollingResistance: s.rollingResistance = m_random.chance(0.3) ? 0.0f : m_random.uniform(0.0f, 0.3f); break;
             case BodyField::Position: s.position = {m_random.uniform(-6.0f, 6.0f), m_random.uniform(0.3f, 6.0f), m_random.uniform(-6.0f, 6.0f)}; break;
             case BodyField::Orientation: s.orientation = m_random.rotation(); break;
             case BodyField::Pose:

@@ -692,6 +692,14 @@ void TestMainWindow::editsWhilePausedKeepTheRun() {
     QCOMPARE(world->bodies().friction[std::size_t(world->bodies().denseIndex(sphere))], 0.05f);
     QVERIFY(liveStates(*world) == run);  // nobody moved, the sphere included
 
+    // Rolling resistance: the same, with the new coefficient.
+    typeInto(inspector->numberField("rollingResistance"), "0.2");
+    QCOMPARE(document->body(2).body.rollingResistance, 0.2f);
+    QCOMPARE(simulation->world(), world);
+    const simcore::BodyId rolling = simulation->bodyIds()[2];
+    QCOMPARE(world->bodies().rollingResistance[std::size_t(world->bodies().denseIndex(rolling))], 0.2f);
+    QVERIFY(liveStates(*world) == run);
+
     // Colour: drawn differently, nothing else.
     simcore::SceneBody red = document->body(2);
     red.color = simcore::Vec3(1, 0, 0);

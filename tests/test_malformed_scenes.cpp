@@ -124,6 +124,12 @@ private:
             {"error at /bodies/0/density: give either mass or density, not both"});
         row("friction -1", v1(body(kSphere, R"("friction": -1)")), {"error at /bodies/0/friction: friction must not be negative"});
         row("restitution 2", v1(body(kSphere, R"("restitution": 2)")), {"error at /bodies/0/restitution: restitution must be at most 1, got 2"});
+        row("rolling resistance negative", v1(body(kSphere, R"("rollingResistance": -0.1)")),
+            {"error at /bodies/0/rollingResistance: rollingResistance must not be negative"});
+        row("rolling resistance beyond float", v1(body(kSphere, R"("rollingResistance": 1e300)")),
+            {"error at /bodies/0/rollingResistance: rollingResistance must be at most 100"});
+        row("rolling resistance as string", v1(body(kSphere, R"("rollingResistance": "low")")),
+            {"error at /bodies/0/rollingResistance: expected a number, got a string"});
         row("zero quaternion", v1(body(kSphere, R"("orientation": [0, 0, 0, 0])")),
             {"error at /bodies/0/orientation: orientation cannot be normalised"});
         row("quaternion of three", v1(body(kSphere, R"("orientation": [1, 0, 0])")),

@@ -81,6 +81,7 @@ void compareScenes(const Scene& a, const Scene& b) {
         else QVERIFY(sameBits(x.density, y.density));
         QVERIFY(sameBits(x.friction, y.friction));
         QVERIFY(sameBits(x.restitution, y.restitution));
+        QVERIFY(sameBits(x.rollingResistance, y.rollingResistance));
         QCOMPARE(x.ccd, y.ccd);
         QCOMPARE(a.bodies[i].color.has_value(), b.bodies[i].color.has_value());
         if (a.bodies[i].color) QVERIFY(sameBits(*a.bodies[i].color, *b.bodies[i].color));
@@ -135,6 +136,7 @@ Scene awkwardScene() {
     SceneBody sphere = body("sphere", Shape::sphere(1.0f / 3.0f));
     sphere.body.mass = 1.0f / 3.0f;
     sphere.body.position = Vec3(0.1f, 0.2f, 0.3f);
+    sphere.body.rollingResistance = 1.0f / 3.0f;
     s.bodies.push_back(sphere);
 
     SceneBody capsule = body("capsule", Shape::capsule(1e-4f, 0.30000001f));
@@ -142,11 +144,13 @@ Scene awkwardScene() {
     capsule.body.mass = 123456.789f;
     capsule.body.ccd = true;
     capsule.body.linearVelocity = Vec3(1e-7f, -2.5f, 0.0f);
+    capsule.body.rollingResistance = std::numeric_limits<float>::denorm_min();
     s.bodies.push_back(capsule);
 
     SceneBody cylinder = body("cylinder", Shape::cylinder(99999.99f, 1e-3f));
     cylinder.body.motion = MotionType::Static;
     cylinder.body.orientation = glm::angleAxis(0.1f, glm::normalize(Vec3(1.0f, 1.0f, 0.0f)));
+    cylinder.body.rollingResistance = -0.0f;  // zero, but its sign must survive the round trip too
     s.bodies.push_back(cylinder);
 
     const std::vector<Vec3> points{{0.0f, 0.0f, 0.0f},       {1.0f / 3.0f, -0.0f, 0.0f}, {0.0f, 0.1f, 1e-7f},
@@ -157,6 +161,7 @@ Scene awkwardScene() {
         SceneBody rock = body("rock", Shape::convexHull(hull.hull));
         rock.body.friction = 0.0f;
         rock.body.restitution = 1.0f;
+        rock.body.rollingResistance = 100.0f;  // the largest the format takes
         rock.color = Vec3(0.0f, 0.5f, 1e-7f);
         s.bodies.push_back(rock);
     }
@@ -234,6 +239,26 @@ private slots:
         QVERIFY(text.find("123456.79") != std::string::npos);  // the float nearest 123456.789
         QVERIFY(text.find("0.10000000149") == std::string::npos);
         QVERIFY(text.find("-0.0") != std::string::npos);
+    }
+
+    // Written only when set, so scenes without rolling resistance save exactly as they did before
+    // the key existed; next to restitution when it is.
+    void rollingResistanceIsWrittenWhenSet() {
+        QVERIFY(serializeScene(defaultScene()).find("rollingResistance") == std::string::npos);
+        const std::string text = serializeScene(awkwardScene());
+        QVERIFY(text.find("\"restitution\": 0.0,\n      \"rollingResistance\": 0.33333334,") != std::string::npos);
+        QVERIFY(text.find("\"rollingResistance\": -0.0") != std::string::npos);
+        QVERIFY(text.find("\"rollingResistance\": 1e-45") != std::string::npos);
+        QVERIFY(text.find("\"rollingResistance\": 100") != std::string::npos);
+        const SceneLoadResult loaded = parseScene(
+            R"({"format": "interplay.scene", "version": 1, "bodies": [
+                {"shape": {"type": "sphere", "radius": 0.25}, "rollingResistance": 0.05}]})",
+            "rolling.json");
+        QVERIFY2(loaded.ok(), describe(loaded.diagnostics).c_str());
+        QCOMPARE(loaded.scene->bodies[0].body.rollingResistance, 0.05f);
+        // And the world takes it: a rolling ball's lever is C r.
+        BuiltWorld built = buildWorld(*loaded.scene);
+        QCOMPARE(built.world.bodies().rollingResistance[0], 0.05f);
     }
 
     void keyOrderIsStable() {
@@ -321,6 +346,7 @@ private slots:
         QCOMPARE(s.bodies[1].body.name, std::string("body 1"));
         QVERIFY(s.bodies[0].body.motion == MotionType::Dynamic);
         QCOMPARE(s.bodies[0].body.density, 1000.0f);
+        QCOMPARE(s.bodies[0].body.rollingResistance, 0.0f);  // default
         QVERIFY(s.bodies[1].body.motion == MotionType::Kinematic);
         QCOMPARE(s.bodies[1].body.density, 500.0f);
         QVERIFY(s.bodies[1].body.ccd);

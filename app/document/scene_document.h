@@ -28,6 +28,7 @@ enum class BodyField {
     Mass,  // mass or density
     Friction,
     Restitution,
+    RollingResistance,
     Position,
     Orientation,
     Pose,  // position, orientation and velocities at once (Apply Simulated Pose)

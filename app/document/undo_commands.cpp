@@ -35,7 +35,8 @@ bool sameSceneBody(const simcore::SceneBody& a, const simcore::SceneBody& b) {
     return sameShape && x.name == y.name && x.motion == y.motion && x.position == y.position &&
            x.orientation == y.orientation && x.linearVelocity == y.linearVelocity &&
            x.angularVelocity == y.angularVelocity && x.mass == y.mass && x.density == y.density &&
-           x.friction == y.friction && x.restitution == y.restitution && x.ccd == y.ccd && a.color == b.color;
+           x.friction == y.friction && x.restitution == y.restitution && x.rollingResistance == y.rollingResistance &&
+           x.ccd == y.ccd && a.color == b.color;
 }
 
 // ---- AddBodies ----------------------------------------------------------------------------------

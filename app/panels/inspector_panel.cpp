@@ -36,6 +36,7 @@ constexpr double kMaxSpeed = 1e4;                               // m/s and rad/s
 constexpr double kMinMass = 1e-6, kMaxMass = 1e9;               // kg
 constexpr double kMinDensity = 1e-3, kMaxDensity = 1e6;         // kg/m^3
 constexpr double kMaxFriction = 100.0;
+constexpr double kMaxRollingResistance = 100.0;
 constexpr double kMaxAngle = 360.0;                             // degrees
 constexpr double kMaxHingeAngle = 180.0;                        // degrees: limits lie within [-pi, pi]
 constexpr double kMaxMotorForce = 1e12;                         // N or N m
@@ -265,6 +266,11 @@ void InspectorPanel::createBodyRows() {
     m_bodyRows.addNumber(QStringLiteral("restitution"), tr("Restitution"), 0.0, 1.0, BodyField::Restitution,
                          [](const simcore::SceneBody& b) -> std::optional<double> { return b.body.restitution; },
                          [](simcore::SceneBody& b, double v) { b.body.restitution = static_cast<float>(v); });
+    m_bodyRows.addNumber(QStringLiteral("rollingResistance"), tr("Rolling resistance"), 0.0, kMaxRollingResistance,
+                         BodyField::RollingResistance,
+                         [](const simcore::SceneBody& b) -> std::optional<double> { return b.body.rollingResistance; },
+                         [](simcore::SceneBody& b, double v) { b.body.rollingResistance = static_cast<float>(v); },
+                         tr("Rolling Resistance"));
 
     // Placement and motion state.
     m_bodyRows.addVector(QStringLiteral("position"), tr("Position (m)"), tr("Position"), -kMaxCoordinate, kMaxCoordinate,

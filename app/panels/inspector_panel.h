@@ -5,9 +5,9 @@
 // selected object the row applies to. With several objects selected a row whose values differ
 // shows "mixed"; typing a value sets it on all of them.
 //
-// Bad input (not a number, NaN, a size <= 0, a negative mass, restitution above 1, a zero axis,
-// limits the wrong way round, anything the engine refuses) pushes nothing: the message says why,
-// and the field shows the old value again.
+// Bad input (not a number, NaN, a size <= 0, a negative mass, restitution above 1, a negative
+// rolling resistance, a zero axis, limits the wrong way round, anything the engine refuses)
+// pushes nothing: the message says why, and the field shows the old value again.
 
 #include "app/document/scene_document.h"
 #include "app/panels/property_rows.h"

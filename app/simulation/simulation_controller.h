@@ -11,9 +11,10 @@
 //   - a move or turn moves or turns the live body by as much as the edit moved the authored one
 //     (a body dragged where the run left it follows the cursor); Apply Simulated Pose and
 //     velocity edits set the live values; a colour is only drawn differently;
-//   - any other change of a body (shape, mass, motion, friction, restitution, CCD, name) re-creates
-//     it in its live pose and velocity, since simcore has no setters for them; its joints are
-//     re-created with it and its contacts start afresh (no warm start for one step);
+//   - any other change of a body (shape, mass, motion, friction, restitution, rolling resistance,
+//     CCD, name) re-creates it in its live pose and velocity, since simcore has no setters for
+//     them; its joints are re-created with it and its contacts start afresh (no warm start for
+//     one step);
 //   - a joint added or changed is created at its bodies' live poses: its anchors and axis follow
 //     body A (a distance joint's second point follows body B), and the bodies' current relative
 //     pose becomes its rest pose (zero hinge angle, zero slide) until Reset, which restores the

@@ -53,6 +53,9 @@ std::array<ContactImpulse, kMaxManifoldPoints> matchImpulses(const ContactManifo
 
 float combineFriction(float a, float b) { return std::sqrt(a * b); }
 float combineRestitution(float a, float b) { return std::max(a, b); }
+float combineRollingResistance(float coefficientA, float radiusA, float coefficientB, float radiusB) {
+    return std::max(coefficientA, coefficientB) * std::max(radiusA, radiusB);
+}
 
 std::size_t ContactManager::addPairs(const std::vector<BodyPair>& pairs, const BodyStorage& bodies,
                                      int maxContactsPerBody) {
@@ -78,6 +81,8 @@ std::size_t ContactManager::addPairs(const std::vector<BodyPair>& pairs, const B
         contact.slotB = pair.b;
         contact.friction = combineFriction(bodies.friction[a], bodies.friction[b]);
         contact.restitution = combineRestitution(bodies.restitution[a], bodies.restitution[b]);
+        contact.rollingLever = combineRollingResistance(bodies.rollingResistance[a], rollingRadius(bodies.shape[a]),
+                                                        bodies.rollingResistance[b], rollingRadius(bodies.shape[b]));
         pairToContact_.insert(key, static_cast<std::uint32_t>(contacts_.size()));
         contact.dynamicPair = dynamicA && dynamicB;
         contacts_.push_back(contact);

@@ -24,12 +24,14 @@ struct ContactImpulse {
 struct FrictionImpulse {
     Vec3 linear{0.0f};   // N s, world frame, in the contact plane (the solver's tangents change)
     float twist = 0.0f;  // N m s, about the normal
+    Vec3 rolling{0.0f};  // N m s, world frame: the angular impulse of rolling resistance (on B; -rolling on A)
 };
 
 struct Contact {
     std::uint32_t slotA = 0, slotB = 0;  // body slots (BodyId::index): stable across removals
     float friction = 0.0f;               // combined: sqrt(frictionA * frictionB)
     float restitution = 0.0f;            // combined: max(restitutionA, restitutionB)
+    float rollingLever = 0.0f;           // m, combined: max(CA, CB) max(rA, rB)
     bool dynamicPair = false;            // both bodies dynamic at creation: counts toward their contact cap
     ContactManifold manifold;
     std::array<ContactImpulse, kMaxManifoldPoints> impulses{};
@@ -40,6 +42,11 @@ struct Contact {
 // restitution by maximum (a bouncy ball bounces on any floor), as in Box2D and Jolt.
 float combineFriction(float a, float b);
 float combineRestitution(float a, float b);
+// Rolling resistance combines into a lever length (m), the larger coefficient times the larger
+// rolling radius (shape.h), as in Box2D v3: the contact's rolling torque is bounded by the lever
+// times the normal force. A soft ball brakes on any floor and a carpet brakes any ball (the
+// carpet is flat, but the ball's radius counts); two flat bodies get 0.
+float combineRollingResistance(float coefficientA, float radiusA, float coefficientB, float radiusB);
 
 class ContactManager {
 public:

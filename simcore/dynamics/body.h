@@ -42,6 +42,10 @@ struct BodyCreationSettings {
 
     float friction = 0.5f;      // Coulomb coefficient, >= 0
     float restitution = 0.0f;   // in [0, 1]
+    // Coefficient of rolling resistance C, dimensionless, >= 0: a contact resists the bodies'
+    // relative turning with a torque of up to C times the rolling radius (rollingRadius in
+    // shape.h) times the normal force. 0 (the default) leaves rolling free.
+    float rollingResistance = 0.0f;
     bool ccd = false;           // always sweep this body (continuous collision)
 };
 

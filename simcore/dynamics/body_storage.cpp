@@ -42,6 +42,7 @@ BodyId BodyStorage::add(const BodyCreationSettings& settings, const MassProperti
     shape.push_back(settings.shape);
     friction.push_back(settings.friction);
     restitution.push_back(settings.restitution);
+    rollingResistance.push_back(settings.rollingResistance);
     ccd.push_back(settings.ccd ? 1 : 0);
     awake.push_back(settings.motion == MotionType::Static ? 0 : 1);
     sleepTime.push_back(0.0f);
@@ -60,7 +61,7 @@ void BodyStorage::remove(BodyId id) {
     const auto i = static_cast<std::size_t>(dense);
     swapRemove(i, centerOfMass, orientation, linearVelocity, angularVelocity, force, torque, mass,
                inverseMass, inertiaLocal, inverseInertiaLocal, inverseInertiaWorld,
-               localCenterOfMass, motion, shape, friction, restitution, ccd, awake, sleepTime,
+               localCenterOfMass, motion, shape, friction, restitution, rollingResistance, ccd, awake, sleepTime,
                name, proxy, bounds);
     slots_.removeAt(i);
 }

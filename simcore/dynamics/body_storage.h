@@ -30,6 +30,7 @@ public:
     std::vector<Shape> shape;
     std::vector<float> friction;
     std::vector<float> restitution;
+    std::vector<float> rollingResistance;    // coefficient C (dimensionless)
     std::vector<std::uint8_t> ccd;           // 1 when the body always sweeps
     std::vector<std::uint8_t> awake;         // 1 when simulated this step
     std::vector<float> sleepTime;            // s the body has been below the sleep thresholds

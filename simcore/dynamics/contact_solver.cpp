@@ -163,13 +163,38 @@ SIMCORE_SIMD_INLINE FloatW separationNow(const PairMotionW& motion, const Vec3W&
     return baseSeparation + dot(d, normal);
 }
 
+// The factor that scales a vector of squared length `length2` into the ball of radius `limit`
+// (1 inside it).
+SIMCORE_SIMD_INLINE FloatW clampScale(FloatW length2, FloatW limit) {
+    return select(length2 > limit * limit, limit / simd::sqrt(simd::max(length2, FloatW::splat(1e-30f))),
+                  FloatW::splat(1.0f));
+}
+
 // Coulomb: scales the tangential impulse (t1, t2) into the disc of radius `limit`.
 SIMCORE_SIMD_INLINE void clampToDisc(FloatW& t1, FloatW& t2, FloatW limit) {
-    const FloatW length2 = t1 * t1 + t2 * t2;
-    const FloatW scale = select(length2 > limit * limit, limit / simd::sqrt(simd::max(length2, FloatW::splat(1e-30f))),
-                                FloatW::splat(1.0f));
+    const FloatW scale = clampScale(t1 * t1 + t2 * t2, limit);
     t1 = t1 * scale;
     t2 = t2 * scale;
+}
+
+// A pure angular impulse: -impulse on A, +impulse on B.
+SIMCORE_SIMD_INLINE void applyAngularImpulse(WideBodies& v, const Vec3W& impulse, const SymMat3W& inverseInertiaA,
+                                             const SymMat3W& inverseInertiaB) {
+    v.angularA = v.angularA - inverseInertiaA * impulse;
+    v.angularB = v.angularB + inverseInertiaB * impulse;
+}
+
+// Rolling resistance: the angular impulse that stops the relative turning wB - wA, accumulated and
+// clamped to the ball of radius `limit` (the rolling lever times the summed normal impulse).
+SIMCORE_SIMD_INLINE void solveRolling(WideBodies& v, const SymMat3W& rollingMass, const SymMat3W& inverseInertiaA,
+                                      const SymMat3W& inverseInertiaB, FloatW (&impulse)[3], FloatW limit) {
+    const Vec3W old{impulse[0], impulse[1], impulse[2]};
+    const Vec3W unclamped = old - rollingMass * (v.angularB - v.angularA);
+    const Vec3W clamped = unclamped * clampScale(dot(unclamped, unclamped), limit);
+    applyAngularImpulse(v, clamped - old, inverseInertiaA, inverseInertiaB);
+    impulse[0] = clamped.x;
+    impulse[1] = clamped.y;
+    impulse[2] = clamped.z;
 }
 
 // A manifold's friction rows, as prepared, and the bodies' inverse masses.
@@ -214,6 +239,15 @@ SIMCORE_SIMD_INLINE FrictionRowsW frictionRows(const Batch& c) {
             load(c.centerB),        c.tangentMass[0],       c.tangentMass[1],       c.tangentMass[2],
             c.twistMass,            c.inverseMassA,         c.inverseMassB,         load(c.inverseInertiaA),
             load(c.inverseInertiaB)};
+}
+
+// (IA^-1 + IB^-1)^-1, the rolling block's mass matrix, inverted in double (a small body's inverse
+// moments cubed overflow float); zero where it is singular (neither body can turn).
+Mat3 rollingMass(const Mat3& inverseInertiaA, const Mat3& inverseInertiaB) {
+    const glm::dmat3 k = glm::dmat3(inverseInertiaA) + glm::dmat3(inverseInertiaB);
+    const double determinant = glm::determinant(k);
+    if (!(determinant > 0.0) || !std::isfinite(determinant)) return Mat3(0.0f);
+    return Mat3(glm::inverse(k));
 }
 
 // 1 / (J M^-1 J^T) of a row along `axis` at the two anchors; zero where neither body can move.
@@ -354,6 +388,15 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const BodyStor
         batch.anyRestitution = batch.anyRestitution || restitution > 0.0f;
         usesFriction_ = usesFriction_ || friction > 0.0f;
         usesRestitution_ = usesRestitution_ || restitution > 0.0f;
+        // Rolling resistance belongs to the friction effect: off with it.
+        const float rollingLever = params.friction ? contact.rollingLever : 0.0f;
+        if (rollingLever > 0.0f) {
+            batch.rollingLever.setLane(lane, rollingLever);
+            setLanes(batch.rollingMass, lane, rollingMass(inverseInertiaA, inverseInertiaB));
+            setLanes(batch.rollingImpulse, lane, contact.frictionImpulse.rolling);
+            batch.anyRolling = true;
+            usesFriction_ = true;
+        }
 
         Vec3 centre(0.0f);
         for (int i = 0; i < manifold.pointCount; ++i) centre += manifold.points[i].pointA + manifold.points[i].pointB;
@@ -462,6 +505,7 @@ void ContactSolver::warmStart(BodyStorage& bodies) {
             applyImpulse(v, impulse, cross(load(p.anchorA), impulse), cross(load(p.anchorB), impulse), c.inverseMassA,
                          c.inverseMassB, f.inverseInertiaA, f.inverseInertiaB);
         }
+        if (c.anyRolling) applyAngularImpulse(v, load(c.rollingImpulse), f.inverseInertiaA, f.inverseInertiaB);
         if (c.anyFriction) applyFriction(v, f, c.tangentImpulse1, c.tangentImpulse2, c.twistImpulse);
         scatterVelocities(rows, c.bodyA, c.bodyB, v);
     }
@@ -532,14 +576,21 @@ void ContactSolver::solve(BodyStorage& bodies, bool useBias) {
                          inverseInertiaA, inverseInertiaB);
         }
 
-        if (c.anyFriction && frictionInPass) {
+        if ((c.anyFriction || c.anyRolling) && frictionInPass) {
             FloatW normalSum = zero, twistReach = zero;
             for (int i = 0; i < c.maxPointCount; ++i) {
                 normalSum = normalSum + c.points[i].normalImpulse;
                 twistReach = mulAdd(c.points[i].normalImpulse, c.points[i].leverArm, twistReach);
             }
-            solveFriction(v, frictionRows(c), c.tangentImpulse1, c.tangentImpulse2, c.twistImpulse,
-                          c.friction * normalSum, c.friction * twistReach);
+            // Rolling resistance before the friction rows (Box3D solves it just before the tangent
+            // block), so the friction that follows holds the contact point still at the turn
+            // rolling resistance left: the whole body slows, not only its spin.
+            if (c.anyRolling)
+                solveRolling(v, load(c.rollingMass), inverseInertiaA, inverseInertiaB, c.rollingImpulse,
+                             c.rollingLever * normalSum);
+            if (c.anyFriction)
+                solveFriction(v, frictionRows(c), c.tangentImpulse1, c.tangentImpulse2, c.twistImpulse,
+                              c.friction * normalSum, c.friction * twistReach);
         }
         const MaskW kept = keepFiniteLanes(v, before);
         if (!simd::all(kept)) {  // and their impulses, which would overflow the next warm start
@@ -547,6 +598,7 @@ void ContactSolver::solve(BodyStorage& bodies, bool useBias) {
             c.tangentImpulse1 = select(kept, c.tangentImpulse1, zero);
             c.tangentImpulse2 = select(kept, c.tangentImpulse2, zero);
             c.twistImpulse = select(kept, c.twistImpulse, zero);
+            for (FloatW& rolling : c.rollingImpulse) rolling = select(kept, rolling, zero);
         }
         scatterVelocities(rows, c.bodyA, c.bodyB, v);
     }
@@ -654,7 +706,9 @@ void ContactSolver::storeImpulses(std::vector<Contact>& contacts) const {
             const Vec3 tangent2(c.tangent2[0].lane(lane), c.tangent2[1].lane(lane), c.tangent2[2].lane(lane));
             for (int i = 0; i < c.pointCount[lane]; ++i) contact.impulses[i] = {c.points[i].normalImpulse.lane(lane)};
             contact.frictionImpulse = {c.tangentImpulse1.lane(lane) * tangent1 + c.tangentImpulse2.lane(lane) * tangent2,
-                                       c.twistImpulse.lane(lane)};
+                                       c.twistImpulse.lane(lane),
+                                       Vec3(c.rollingImpulse[0].lane(lane), c.rollingImpulse[1].lane(lane),
+                                            c.rollingImpulse[2].lane(lane))};
         }
     }
 }

@@ -1,15 +1,16 @@
 #pragma once
 // Sequential impulses on contact manifolds: accumulated impulses with clamping, warm starting,
 // Coulomb friction per manifold (two tangent rows at the friction centre and a twist row, bounded
-// by the summed normal impulse), restitution above a velocity threshold, speculative contacts,
-// and soft-step or Baumgarte position correction.
+// by the summed normal impulse), rolling resistance per manifold (an angular block bounded by the
+// contact's rolling lever times the summed normal impulse), restitution above a velocity
+// threshold, speculative contacts, and soft-step or Baumgarte position correction.
 //
 // Within one World::step the solver is used as:
 //   prepare (once) -> for each substep { [resolveCollisions, first substep only], warmStart,
 //   solve(useBias=true) x N, [positions move], [resolveCollisions], relax = solve(useBias=false)
 //   x M } -> storeImpulses,
-// with resolveCollisions only when usesRestitution(). Friction is solved in the relax passes (in
-// the velocity passes when there are none).
+// with resolveCollisions only when usesRestitution(). Friction and rolling resistance are solved
+// in the relax passes (in the velocity passes when there are none).
 //
 // Restitution is a collision pass before the contact solve (as in Guendelman, Bridson and Fedkiw
 // 2003): every point that closes faster than the restitution threshold and would touch within a
@@ -58,7 +59,8 @@ public:
 
     std::size_t constraintCount() const { return constraintCount_; }
     std::size_t colorCount() const { return colorCount_; }
-    // Whether any prepared constraint has friction rows / can bounce (effects that ran).
+    // Whether any prepared constraint has friction or rolling-resistance rows / can bounce (effects
+    // that ran; rolling resistance belongs to the friction effect).
     bool usesFriction() const { return usesFriction_; }
     bool usesRestitution() const { return usesRestitution_; }
     float maxPenetration() const { return maxPenetration_; }  // at prepare time (m)
@@ -94,6 +96,13 @@ private:
         FloatW tangentMass[3];                       // inverse of the 2x2 block: 11, 22, 12
         FloatW tangentImpulse1, tangentImpulse2;     // N s
         FloatW twistMass, twistImpulse;              // 1 / (n . (IA^-1 + IB^-1) n); N m s
+        // Rolling resistance (as in Box3D): a three-row block on the relative angular velocity
+        // wB - wA with the mass matrix (IA^-1 + IB^-1)^-1, its accumulated angular impulse clamped
+        // to the ball of radius rollingLever times the summed normal impulse. Zero where the pair
+        // has no rolling resistance.
+        FloatW rollingLever;                         // m: Contact::rollingLever
+        FloatW rollingMass[6];                       // (IA^-1 + IB^-1)^-1: xx yy zz xy xz yz
+        FloatW rollingImpulse[3];                    // N m s, on B (-rollingImpulse on A), world
         // Sphere and capsule radii (0 for other shapes). Rolling turns a round body's surface point
         // away from the contact without changing the gap, so the separation follows the anchors'
         // projections on the core (centre or segment) instead.
@@ -102,7 +111,7 @@ private:
         std::uint32_t contactIndex[kLanes];
         std::uint8_t pointCount[kLanes];
         std::uint8_t maxPointCount;
-        bool anyFriction, anyRestitution;
+        bool anyFriction, anyRolling, anyRestitution;
     };
     // Per solver body, rows of 8 floats for the wide gathers: velocity (linear xyz, pad, angular
     // xyz, pad) and motion since prepare (centre of mass xyz, pad, rotation quaternion xyzw).

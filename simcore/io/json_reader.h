@@ -136,6 +136,7 @@ inline constexpr Range kMass{1e-6, 1e9, false, " kg"};
 inline constexpr Range kDensity{1e-3, 1e6, false, " kg/m^3"};
 inline constexpr Range kFriction{0.0, 100.0, false};
 inline constexpr Range kRestitution{0.0, 1.0, false};
+inline constexpr Range kRollingResistance{0.0, 100.0, false};
 inline constexpr Range kLinearSpeed{-1e4, 1e4, false, " m/s"};
 inline constexpr Range kAngularSpeed{-1e4, 1e4, false, " rad/s"};
 inline constexpr Range kColor{0.0, 1.0, false};

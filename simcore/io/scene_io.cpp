@@ -6,7 +6,8 @@
 //    each body's "shape", its "type" and the dimensions that type needs.
 //  - sizes (halfExtents, radius, halfHeight) in [1e-4, 1e5] m; positions and hull points within
 //    +-1e6 m; mass in [1e-6, 1e9] kg; density in [1e-3, 1e6] kg/m^3 (mass and density are
-//    exclusive); friction in [0, 100]; restitution in [0, 1]; velocities within +-1e4 m/s and
+//    exclusive); friction in [0, 100]; restitution in [0, 1]; rollingResistance in [0, 100] (optional,
+//    default 0, written only when set); velocities within +-1e4 m/s and
 //    rad/s; colour components in [0, 1]. Outside these ranges float precision, or the solver,
 //    would give garbage, so a clear refusal is kinder than a strange simulation.
 //  - orientation [w, x, y, z]: finite and not (near) zero length; a quaternion more than 1e-3
@@ -257,7 +258,7 @@ std::optional<SceneBody> readBody(Reader& r, const Json& b, const std::string& p
     if (!r.expectObject(b, path)) return std::nullopt;
     r.checkKeys(b, path,
                 {"name", "motion", "shape", "position", "orientation", "linearVelocity", "angularVelocity", "mass",
-                 "density", "friction", "restitution", "ccd", "color"});
+                 "density", "friction", "restitution", "rollingResistance", "ccd", "color"});
     const int errorsBefore = r.errorCount();
     SceneBody out;
     BodyCreationSettings& s = out.body;
@@ -297,6 +298,7 @@ std::optional<SceneBody> readBody(Reader& r, const Json& b, const std::string& p
 
     r.optionalFloat(b, path, "friction", limits::kFriction, s.friction);
     r.optionalFloat(b, path, "restitution", limits::kRestitution, s.restitution);
+    r.optionalFloat(b, path, "rollingResistance", limits::kRollingResistance, s.rollingResistance);
     r.optionalBool(b, path, "ccd", s.ccd);
     if (const Json* color = Reader::find(b, "color"))
         if (const auto c = r.readVec3(*color, childPath(path, "color"), limits::kColor)) out.color = *c;
@@ -615,6 +617,9 @@ OrderedJson bodyJson(const SceneBody& sb) {
     else j["density"] = number(b.density);
     j["friction"] = number(b.friction);
     j["restitution"] = number(b.restitution);
+    // Only when set, so files of scenes without it stay as they were (-0 is kept: it reads back
+    // as itself, and saving gives back every value bit for bit).
+    if (b.rollingResistance != 0.0f || std::signbit(b.rollingResistance)) j["rollingResistance"] = number(b.rollingResistance);
     j["ccd"] = b.ccd;
     if (sb.color) j["color"] = vec3(*sb.color);
     return j;

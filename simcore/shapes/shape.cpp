@@ -171,6 +171,17 @@ float volume(const Shape& shape) {
     return 0.0f;
 }
 
+float rollingRadius(const Shape& shape) {
+    switch (shape.type) {
+    case ShapeType::Sphere:
+    case ShapeType::Capsule:
+    case ShapeType::Cylinder: return shape.radius;
+    case ShapeType::Box:
+    case ShapeType::ConvexHull: return 0.0f;
+    }
+    return 0.0f;
+}
+
 float minimumExtent(const Shape& shape) {
     switch (shape.type) {
     case ShapeType::Sphere:

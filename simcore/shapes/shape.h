@@ -57,4 +57,10 @@ MassProperties massPropertiesForMass(const Shape& shape, float mass);
 // enough to need continuous collision.
 float minimumExtent(const Shape& shape);
 
+// The lever of rolling resistance (m): the radius a round body rolls on (sphere, capsule and
+// cylinder radius), 0 for boxes and hulls, which rest on flat faces and tip rather than roll. A
+// cylinder standing on a flat end keeps its radius, so its resistance also acts against turning
+// on that end.
+float rollingRadius(const Shape& shape);
+
 }  // namespace simcore

@@ -51,6 +51,7 @@ void validateBody(const BodyCreationSettings& s) {
     require(isFinite(s.friction) && s.friction >= 0.0f, "friction must be finite and >= 0");
     require(isFinite(s.restitution) && s.restitution >= 0.0f && s.restitution <= 1.0f,
             "restitution must be in [0, 1]");
+    require(isFinite(s.rollingResistance) && s.rollingResistance >= 0.0f, "rollingResistance must be finite and >= 0");
 }
 
 void validateSettings(const WorldSettings& s) {

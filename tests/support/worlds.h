@@ -87,7 +87,7 @@ struct Incline {
     Vec3 downSlope = rotation * Vec3(-1.0f, 0.0f, 0.0f);  // (-cos, -sin, 0)
     BodyId body;
 
-    Incline(World& world, const Shape& shape, float offsetAlongNormal, float friction) {
+    Incline(World& world, const Shape& shape, float offsetAlongNormal, float friction, float rollingResistance = 0.0f) {
         BodyCreationSettings ramp;
         ramp.name = "ramp";
         ramp.motion = MotionType::Static;
@@ -103,6 +103,7 @@ struct Incline {
         b.orientation = rotation;
         b.position = normal * (0.1f + offsetAlongNormal) - downSlope * 8.0f;
         b.friction = friction;  // both sides the same: the combined sqrt(mu mu) is mu
+        b.rollingResistance = rollingResistance;  // the ramp's is 0: the pair's lever is C r
         body = world.createBody(b);
     }
     float slopeSpeed(const World& world) const { return glm::dot(world.linearVelocity(body), downSlope); }
