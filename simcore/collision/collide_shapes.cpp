@@ -64,9 +64,15 @@ struct Contacts {
     }
 };
 
-// Keeps at most four candidates spanning the largest area: the deepest (it carries the most
-// important constraint), the farthest from it, the one maximising the triangle, then the one
-// adding the most area to it. Areas are signed, measured in the contact plane.
+// Keeps at most four candidates spanning the largest area: one deep point, the farthest from it, the
+// one maximising the triangle, then the one adding the most area to it. Areas are signed, measured
+// in the contact plane.
+//
+// The choice must not flicker from step to step, or the warm start is lost and the support polygon
+// jumps: a cap of 8 rim points rocking on another chose a different 4 of them whenever the deepest
+// changed by a micrometre, and a stack of 10 cylinders never came to rest. So a candidate replaces
+// the one already chosen only when it is better by a margin (kChoiceMargin of depth, kChoiceRatio of
+// a distance or an area): near-ties go to the earlier candidate, whose order follows the features.
 void reduceToManifold(const Contacts& contacts, ContactManifold& out) {
     out.normal = contacts.normal;
     out.pointCount = 0;
@@ -78,18 +84,20 @@ void reduceToManifold(const Contacts& contacts, ContactManifold& out) {
         for (int i = 0; i < contacts.count; ++i) keep(i);
         return;
     }
+    constexpr float kChoiceMargin = 0.2f * kLinearSlop;  // m
+    constexpr float kChoiceRatio = 1.05f;
     const Vec3& n = contacts.normal;
     const auto at = [&](int i) { return contacts.items[i].pointA; };
 
     int first = 0;
     for (int i = 1; i < contacts.count; ++i) {
-        if (contacts.items[i].separation < contacts.items[first].separation) first = i;
+        if (contacts.items[i].separation < contacts.items[first].separation - kChoiceMargin) first = i;
     }
     int second = -1;
     float farthest = -1.0f;
     for (int i = 0; i < contacts.count; ++i) {
         const float d2 = lengthSquared(at(i) - at(first));
-        if (d2 > farthest) farthest = d2, second = i;
+        if (d2 > kChoiceRatio * farthest) farthest = d2, second = i;
     }
     keep(first);
     if (farthest <= 1e-12f) return;  // all candidates coincide
@@ -99,7 +107,7 @@ void reduceToManifold(const Contacts& contacts, ContactManifold& out) {
     float triangleArea = 0.0f;  // signed, twice the area
     for (int i = 0; i < contacts.count; ++i) {
         const float area = glm::dot(glm::cross(at(second) - at(first), at(i) - at(first)), n);
-        if (std::abs(area) > std::abs(triangleArea)) triangleArea = area, third = i;
+        if (std::abs(area) > kChoiceRatio * std::abs(triangleArea)) triangleArea = area, third = i;
     }
     if (third < 0 || std::abs(triangleArea) <= 1e-9f) return;  // collinear
     keep(third);
@@ -115,7 +123,7 @@ void reduceToManifold(const Contacts& contacts, ContactManifold& out) {
             const Vec3 p = at(corners[e]);
             const Vec3 q = at(corners[(e + 1) % 3]);
             const float area = orientation * glm::dot(glm::cross(q - p, at(i) - p), n);
-            if (area < addedArea) addedArea = area, fourth = i;
+            if (area < kChoiceRatio * addedArea) addedArea = area, fourth = i;
         }
     }
     if (fourth >= 0) keep(fourth);
