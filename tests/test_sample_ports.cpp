@@ -1,0 +1,485 @@
+// The project's ports of other engines' hard-case samples (Box3D's Robustness and Stacking samples
+// and its wheel stack, Box2D v3's HighMassRatio2 and 3, Jolt's HeavyOnLightTest and HighSpeedTest),
+// each run at simcore's defaults - no preset, no solver setting, only the sample's own gravity and
+// materials - with numeric bounds:
+//   stands      after T s every dynamic body's origin is within a stated distance of where it rests
+//               (its start; for a body the sample drops, its start less the gaps below it), sideways
+//               and in height
+//   no launch   no body ever faster than the push bound (solver.maxPushVelocity) plus what gravity
+//               can add in the fall the recovery allows
+//   settles     no body faster than 0.1 m/s after T s
+//   no tunnel   no body thrown at a surface crosses it, nor ends inside or behind a static one
+//   no rebound  restitution 0: no body that lands moves upward faster than 0.1 m/s (they start at
+//               rest or thrown down, so any upward speed is a bounce off what they landed on)
+// The scenes are built in support/worlds.h; scenes/ports/ holds each as a scene file, checked here
+// to be the same scene, so the runner and the reference engines' stand-ins run exactly what is
+// tested. A sample simcore does not hold yet is still a test, marked QEXPECT_FAIL with the figure
+// measured: it turns into an unexpected pass, and fails the suite, once the engine holds it.
+//
+//   INTERPLAY_WRITE_PORT_SCENES=1   rewrite scenes/ports/*.json from the builders
+//   INTERPLAY_PORT_CHECKS_DIR=DIR   write DIR/NAME.checks.json: each sample's checks, bounds, rest
+//                                   positions and thrown pairs, to measure a trace the same way
+
+#include "simcore/io/scene_io.h"
+#include "simcore/world/world.h"
+
+#include "support/worlds.h"
+
+#include <QtTest>
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace simcore;
+using namespace test_support;
+
+namespace {
+
+enum class Kind { Sideways, Height, NoLaunch, Settles, NoTunnel, NoRebound };
+
+const char* kindName(Kind kind) {
+    switch (kind) {
+        case Kind::Sideways: return "sideways";
+        case Kind::Height: return "height";
+        case Kind::NoLaunch: return "noLaunch";
+        case Kind::Settles: return "settles";
+        case Kind::NoTunnel: return "noTunnel";
+        case Kind::NoRebound: return "noRebound";
+    }
+    return "?";
+}
+
+struct Check {
+    Kind kind;
+    float bound;  // m, m/s, or a count (no tunnel: 0)
+    // Set while simcore fails the check: the figure measured and where it is discussed. The check
+    // is then QEXPECT_FAIL, and an unexpected pass fails the suite.
+    const char* knownFailure = nullptr;
+};
+
+struct Port {
+    std::function<PortedSample()> build;
+    float seconds;
+    std::vector<Check> checks;
+};
+
+constexpr float kSettledSpeed = 0.1f;  // m/s
+constexpr float kReboundSpeed = 0.1f;  // m/s
+
+// The push bound plus what gravity adds in a fall of `drop` metres: a body pushed out of an overlap
+// that gives way under it can fall that far (at g = 10 in Box3D's samples).
+float pushBound(float drop) { return WorldSettings{}.solver.maxPushVelocity + std::sqrt(2.0f * 10.0f * drop); }
+
+// Stands: 2 cm sideways (the issue's bound for a tower of 40 and a pyramid of base 20), and 2 cm
+// or 0.25 % of the structure's height, whichever is larger, up or down (the soft contacts'
+// compression adds up along a stack: the issue allows 10 cm for a tower 40 m high); for the tiny
+// pyramid of 5 cm cubes, 10 % of a cube both ways. Stacks run 10 s (by then a standing one sleeps),
+// impacts until everything has landed. Known failures quote simcore's figure and Box3D's at its
+// defaults on the same scene file (box3d_run, see issue 12).
+std::vector<Port> ports() {
+    const float T = 10.0f;
+    auto sideways = [](const char* knownFailure = nullptr) { return Check{Kind::Sideways, 0.02f, knownFailure}; };
+    auto height = [](float structure, const char* knownFailure = nullptr) {
+        return Check{Kind::Height, std::max(0.02f, 0.0025f * structure), knownFailure};
+    };
+    const Check noTunnel{Kind::NoTunnel, 0.0f};
+    auto noRebound = [](const char* knownFailure) { return Check{Kind::NoRebound, kReboundSpeed, knownFailure}; };
+    return {
+        {box3dHighMassRatio1, T,
+         {sideways("HighMassRatio1: the pyramids' upper rows shear and fall, a cube 48.5 m sideways at 10 s "
+                   "(Box3D 0.41 m), bound 2 cm; issue 12"),
+          height(20.0f, "HighMassRatio1: the 300:1 top cube falls, 18.0 m below its rest at 10 s (Box3D 0.20 m), "
+                        "bound 5 cm; issue 12")}},
+        {[] { return box2dHighMassRatio(2); }, T,
+         {sideways("HighMassRatio2: the 400:1 box lands and slides 1.17 m sideways by 10 s (Box3D 0.53 m), "
+                   "bound 2 cm; issue 12"),
+          height(21.0f), noTunnel,
+          noRebound("HighMassRatio2: restitution 0, yet the 400:1 box leaves its supports upward at 4.33 m/s "
+                    "(Box3D 4.44 m/s), bound 0.1 m/s; issue 12")}},
+        {[] { return box2dHighMassRatio(3); }, T,
+         {sideways("HighMassRatio3: the 800:1 box slides 0.24 m sideways off the prisms' ridges by 10 s "
+                   "(Box3D 0.08 m), bound 2 cm; issue 12"),
+          height(21.0f, "HighMassRatio3: the 800:1 box ends 0.10 m off its rest at 10 s (Box3D 0.31 m), "
+                        "bound 5.25 cm; issue 12"),
+          noTunnel,
+          noRebound("HighMassRatio3: restitution 0, yet the 800:1 box leaves the prisms upward at 2.36 m/s "
+                    "(Box3D 1.38 m/s), bound 0.1 m/s; issue 12")}},
+        {box3dTinyPyramid, T,
+         {{Kind::Sideways, 0.005f,
+           "Tiny Pyramid: collapses, a 5 cm cube 2.49 m sideways at 10 s (Box3D 1.9 cm), bound 5 mm; the fixed "
+           "2 cm speculative distance and 5 mm slop are 40 % and 10 % of a cube; issue 12"},
+          {Kind::Height, 0.005f, "Tiny Pyramid: collapses, a cube 1.45 m below its rest at 10 s (Box3D 6.3 cm), "
+                                 "bound 5 mm; issue 12"}}},
+        {box3dOverlapRecovery, 3.0f,
+         {{Kind::NoLaunch, pushBound(0.25f),
+           "Overlap Recovery: a cube thrown at 6.66 m/s (Box3D 3.51 m/s), bound 5.24 m/s (the 3 m/s push and a "
+           "25 cm fall): the push cap is per contact and stacked overlaps add up; issue 12"},
+          {Kind::Settles, kSettledSpeed,
+           "Overlap Recovery: still moving at 1.02 m/s at 3 s (Box3D at rest), bound 0.1 m/s; issue 12"}}},
+        {box3dCardHouse, T, {sideways(), height(1.9f)}},
+        {box3dJenga, T,
+         {sideways("Jenga: a bar of the top layers 16.9 cm sideways at 10 s (Box3D 7.4 cm), bound 2 cm; issue 12"),
+          height(6.0f, "Jenga: a bar 5.7 cm off its rest at 10 s (Box3D 14 cm), bound 2 cm; issue 12")}},
+        {box3dCylinderStack, T, {sideways(), height(9.8f)}},
+        {box3dCapsuleStack, T,
+         {sideways("Capsule Stack: the top capsule slides 2.1 cm along its axis before it sleeps (Box3D 1.7 cm), "
+                   "bound 2 cm; issue 12"),
+          height(20.0f)}},
+        {box3dWheelStack, T,
+         {sideways("Wheel Stack: topples, a wheel 6.32 m sideways at 10 s (Box3D 12.7 cm), bound 2 cm; issue 12"),
+          height(5.1f, "Wheel Stack: topples, a wheel 4.96 m below its rest at 10 s (Box3D 30 cm), bound 2 cm; "
+                       "issue 12")}},
+        {joltHeavyOnLight, T,
+         {sideways("HeavyOnLight: the pairs slide apart and the 30:1 box falls off its light one, 27.3 m sideways "
+                   "at 10 s (Box3D 3.4 m), bound 2 cm; issue 12"),
+          height(20.0f, "HeavyOnLight: a heavy box ends 10.0 m below its rest, on the floor (Box3D 1.9 cm), "
+                        "bound 5 cm; issue 12"),
+          noTunnel,
+          noRebound("HeavyOnLight: restitution 0, yet the 45:1 box leaves its light one upward at 8.86 m/s "
+                    "(Box3D 8.38 m/s), bound 0.1 m/s; issue 12")}},
+        {joltHighSpeed, 2.0f,
+         {noTunnel, noRebound("HighSpeed: the flat bar thrown down at 100 m/s with restitution 0 leaves the floor at "
+                              "3.30 m/s (Box3D 6.50 m/s), bound 0.1 m/s; issue 12")}},
+    };
+}
+
+// The half size of a surface's box: a box's half extents, a centred hull's bounds.
+Vec3 halfExtentsOf(const Shape& shape) {
+    switch (shape.type) {
+        case ShapeType::Box: return shape.halfExtents;
+        case ShapeType::ConvexHull: {
+            Vec3 h(0.0f);
+            for (const Vec3& v : shape.hull->vertices()) h = glm::max(h, glm::abs(v));
+            return h;
+        }
+        case ShapeType::Sphere: return Vec3(shape.radius);
+        case ShapeType::Capsule: return Vec3(shape.radius, shape.radius + shape.halfHeight, shape.radius);
+        case ShapeType::Cylinder: return Vec3(shape.radius, shape.halfHeight, shape.radius);
+    }
+    return Vec3(0.0f);
+}
+
+// The largest distance between the origins of two bodies that touch (each origin the middle of its
+// bounds): the sum of the half diagonals.
+float touchingDistance(const Shape& a, const Shape& b) { return glm::length(halfExtentsOf(a)) + glm::length(halfExtentsOf(b)); }
+
+// Half the distance from a mover's origin to the nearest point of its surface: how far beyond a
+// face's edge its centre may pass and still have gone through solid material by at least that much
+// (not merely grazed the edge).
+float tunnelMargin(const Shape& shape) {
+    float inscribed = 0.0f;
+    switch (shape.type) {
+        case ShapeType::Sphere:
+        case ShapeType::Capsule: inscribed = shape.radius; break;
+        case ShapeType::Box: inscribed = std::min({shape.halfExtents.x, shape.halfExtents.y, shape.halfExtents.z}); break;
+        case ShapeType::Cylinder: inscribed = std::min(shape.radius, shape.halfHeight); break;
+        case ShapeType::ConvexHull:
+            inscribed = shape.hull->faces().front().offset;
+            for (const HullFace& f : shape.hull->faces()) inscribed = std::min(inscribed, f.offset);
+            break;
+    }
+    return 0.5f * inscribed;
+}
+
+// Follows one mover against one surface: which side of the surface's slab (its bounds along the
+// thin axis) the mover's origin is on, and whether it ever goes from the front to behind through
+// the face: the straight path, in the surface's frame, from the last place it was in front to where
+// it is behind meets the slab's mid-plane inside the face (widened by the tunnel margin), and the
+// path relative to the surface, in the world, comes within touching distance of it. (The second
+// test keeps a surface that spins, a box struck off centre and turning half a turn a step, from
+// turning its back on a mover that bounced off it and is metres away.)
+class TunnelWatch {
+public:
+    TunnelWatch(const ThrownAt& t, const Vec3& halfExtents, float margin, float touching)
+        : t_(t), half_(halfExtents), margin_(margin), touching_(touching) {}
+
+    void observe(const Vec3& mover, const Vec3& surface, const Quat& rotation, std::uint64_t step) {
+        const Vec3 relative = mover - surface;
+        const Vec3 local = glm::conjugate(rotation) * relative;
+        const int side = sideOf(local);
+        if (side == static_cast<int>(t_.front)) {
+            lastFront_ = local;
+            lastFrontRelative_ = relative;
+            seenFront_ = true;
+        } else if (side == -static_cast<int>(t_.front) && seenFront_ && !crossedAt_) {
+            const float s0 = lastFront_[t_.axis], s1 = local[t_.axis];
+            if (inFace(lastFront_ + (s0 / (s0 - s1)) * (local - lastFront_)) &&
+                distanceToSegment(Vec3(0.0f), lastFrontRelative_, relative) <= touching_)
+                crossedAt_ = step;
+            seenFront_ = false;
+        }
+        final_ = local;
+    }
+    bool tunnelled(bool surfaceMoves) const {
+        return crossedAt_ || (!surfaceMoves && inFace(final_) && sideOf(final_) != static_cast<int>(t_.front));
+    }
+    std::uint64_t crossedAt() const { return crossedAt_; }
+
+private:
+    int sideOf(const Vec3& local) const {
+        const float s = local[t_.axis], h = half_[t_.axis];
+        return s > h ? 1 : s < -h ? -1 : 0;
+    }
+    bool inFace(const Vec3& local) const {
+        for (int a = 0; a < 3; ++a)
+            if (a != t_.axis && std::abs(local[a]) > half_[a] + margin_) return false;
+        return true;
+    }
+    static float distanceToSegment(const Vec3& p, const Vec3& a, const Vec3& b) {
+        const Vec3 ab = b - a;
+        const float t = glm::dot(ab, ab) > 0.0f ? std::clamp(glm::dot(p - a, ab) / glm::dot(ab, ab), 0.0f, 1.0f) : 0.0f;
+        return glm::length(a + t * ab - p);
+    }
+    ThrownAt t_;
+    Vec3 half_;
+    float margin_, touching_;
+    Vec3 lastFront_{0.0f}, lastFrontRelative_{0.0f}, final_{0.0f};
+    bool seenFront_ = false;
+    std::uint64_t crossedAt_ = 0;
+};
+
+struct Figures {
+    float sideways = 0.0f;    // stands: largest horizontal distance of an origin from its rest after T, m
+    std::string sidewaysBody;
+    float height = 0.0f;      // stands: largest vertical distance of an origin from its rest after T, m
+    std::string heightBody;
+    float peakSpeed = 0.0f;   // no launch: largest speed over the run, m/s
+    std::string peakBody;
+    float finalSpeed = 0.0f;  // settles: largest speed after T, m/s
+    int tunnels = 0;          // no tunnel: thrown pairs that crossed
+    std::string tunnelWhat;
+    float rebound = 0.0f;     // no rebound: largest upward speed of a restitution-0 body, m/s
+    std::string reboundBody;
+
+    float of(Kind kind) const {
+        switch (kind) {
+            case Kind::Sideways: return sideways;
+            case Kind::Height: return height;
+            case Kind::NoLaunch: return peakSpeed;
+            case Kind::Settles: return finalSpeed;
+            case Kind::NoTunnel: return static_cast<float>(tunnels);
+            case Kind::NoRebound: return rebound;
+        }
+        return 0.0f;
+    }
+};
+
+Figures measure(const PortedSample& sample, float seconds) {
+    BuiltWorld built = buildWorld(sample.scene);
+    World& world = built.world;
+    const std::vector<BodyId>& ids = built.bodyIds;
+    std::vector<std::size_t> dynamic;
+    for (std::size_t i = 0; i < ids.size(); ++i)
+        if (world.motionType(ids[i]) == MotionType::Dynamic) dynamic.push_back(i);
+    std::vector<TunnelWatch> watches;
+    for (const ThrownAt& t : sample.thrown)
+        watches.emplace_back(t, halfExtentsOf(world.shape(ids[t.surface])), tunnelMargin(world.shape(ids[t.mover])),
+                             touchingDistance(world.shape(ids[t.surface]), world.shape(ids[t.mover])));
+    auto observe = [&] {
+        for (std::size_t k = 0; k < watches.size(); ++k) {
+            const ThrownAt& t = sample.thrown[k];
+            watches[k].observe(world.position(ids[t.mover]), world.position(ids[t.surface]), world.orientation(ids[t.surface]),
+                               world.stepCount());
+        }
+    };
+    Figures f;
+    observe();
+    for (int step = 0, n = stepsFor(world, seconds); step < n; ++step) {
+        world.step();
+        observe();
+        for (std::size_t i : dynamic) {
+            const float speed = glm::length(world.linearVelocity(ids[i]));
+            if (speed > f.peakSpeed) f.peakSpeed = speed, f.peakBody = sample.scene.bodies[i].body.name;
+        }
+        for (std::size_t i : sample.restitutionZero) {
+            const float up = world.linearVelocity(ids[i]).y;
+            if (up > f.rebound) f.rebound = up, f.reboundBody = sample.scene.bodies[i].body.name;
+        }
+    }
+    for (std::size_t i : dynamic) {
+        const Vec3 d = world.position(ids[i]) - sample.rest[i];
+        const std::string body = sample.scene.bodies[i].body.name + " " + std::to_string(i);
+        if (std::hypot(d.x, d.z) > f.sideways) f.sideways = std::hypot(d.x, d.z), f.sidewaysBody = body;
+        if (std::abs(d.y) > f.height) f.height = std::abs(d.y), f.heightBody = body;
+        f.finalSpeed = std::max(f.finalSpeed, glm::length(world.linearVelocity(ids[i])));
+    }
+    for (std::size_t k = 0; k < watches.size(); ++k) {
+        const ThrownAt& t = sample.thrown[k];
+        if (!watches[k].tunnelled(world.motionType(ids[t.surface]) == MotionType::Dynamic)) continue;
+        if (f.tunnels++ == 0)
+            f.tunnelWhat = sample.scene.bodies[t.mover].body.name + " " + std::to_string(t.mover) + " through " +
+                           sample.scene.bodies[t.surface].body.name + " " + std::to_string(t.surface) +
+                           (watches[k].crossedAt() ? " at step " + std::to_string(watches[k].crossedAt()) : std::string(" (ends inside or behind)"));
+    }
+    return f;
+}
+
+QString describe(Kind kind, const Figures& f) {
+    switch (kind) {
+        case Kind::Sideways: return QString("%1 m (%2)").arg(f.sideways, 0, 'f', 4).arg(f.sidewaysBody.c_str());
+        case Kind::Height: return QString("%1 m (%2)").arg(f.height, 0, 'f', 4).arg(f.heightBody.c_str());
+        case Kind::NoLaunch: return QString("peak %1 m/s (%2)").arg(f.peakSpeed, 0, 'f', 3).arg(f.peakBody.c_str());
+        case Kind::Settles: return QString("%1 m/s at the end").arg(f.finalSpeed, 0, 'f', 3);
+        case Kind::NoTunnel: return QString("%1 crossed (%2)").arg(f.tunnels).arg(f.tunnelWhat.c_str());
+        case Kind::NoRebound: return QString("up at %1 m/s (%2)").arg(f.rebound, 0, 'f', 3).arg(f.reboundBody.c_str());
+    }
+    return {};
+}
+
+// ---- scene files ----
+
+using OrderedJson = nlohmann::ordered_json;
+
+// The keys of `value` that differ from `defaults`, recursively: a port's file sets only what the
+// sample needs (its gravity).
+OrderedJson changedKeys(const OrderedJson& value, const OrderedJson& defaults) {
+    OrderedJson out = OrderedJson::object();
+    for (auto it = value.begin(); it != value.end(); ++it) {
+        if (it.key() == "preset") continue;
+        const OrderedJson* d = defaults.contains(it.key()) ? &defaults[it.key()] : nullptr;
+        if (it->is_object() && d && d->is_object()) {
+            OrderedJson sub = changedKeys(*it, *d);
+            if (!sub.empty()) out[it.key()] = std::move(sub);
+        } else if (!d || *d != *it) {
+            out[it.key()] = *it;
+        }
+    }
+    return out;
+}
+
+// The scene as a v1 file, one body a line, with only the settings (and body keys) that differ from
+// the defaults.
+std::string portSceneText(const Scene& scene) {
+    const OrderedJson full = OrderedJson::parse(serializeScene(scene));
+    Scene bare;
+    bare.bodies.push_back({BodyCreationSettings{}, std::nullopt});
+    const OrderedJson defaults = OrderedJson::parse(serializeScene(bare));
+    std::ostringstream out;
+    out << "{\n  \"format\": " << full["format"].dump() << ",\n  \"version\": " << full["version"].dump()
+        << ",\n  \"settings\": " << changedKeys(full["settings"], defaults["settings"]).dump() << ",\n  \"bodies\": [\n";
+    const OrderedJson& bodies = full["bodies"];
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+        OrderedJson body = OrderedJson::object();
+        for (auto it = bodies[i].begin(); it != bodies[i].end(); ++it)
+            if (it.key() == "name" || it.key() == "shape" || it.key() == "position" || *it != defaults["bodies"][0][it.key()])
+                body[it.key()] = *it;
+        out << "    " << body.dump() << (i + 1 < bodies.size() ? ",\n" : "\n");
+    }
+    out << "  ]\n}\n";
+    return out.str();
+}
+
+std::filesystem::path portScenePath(const std::string& name) {
+    return std::filesystem::path(INTERPLAY_SOURCE_DIR) / "scenes" / "ports" / (name + ".json");
+}
+
+// What a trace of the port must be measured against, for a script that compares engines.
+OrderedJson checksJson(const PortedSample& sample, const Port& port) {
+    OrderedJson j;
+    j["name"] = sample.name;
+    j["seconds"] = port.seconds;
+    OrderedJson checks = OrderedJson::array();
+    for (const Check& c : port.checks) checks.push_back({{"kind", kindName(c.kind)}, {"bound", c.bound}});
+    j["checks"] = checks;
+    OrderedJson rest = OrderedJson::array();
+    for (const Vec3& r : sample.rest) rest.push_back({r.x, r.y, r.z});
+    j["rest"] = rest;
+    OrderedJson thrown = OrderedJson::array();
+    for (const ThrownAt& t : sample.thrown) {
+        const Vec3 half = halfExtentsOf(sample.scene.bodies[t.surface].body.shape);
+        thrown.push_back({{"mover", t.mover}, {"surface", t.surface}, {"axis", t.axis}, {"front", t.front},
+                          {"halfExtents", {half.x, half.y, half.z}},
+                          {"margin", tunnelMargin(sample.scene.bodies[t.mover].body.shape)},
+                          {"touching", touchingDistance(sample.scene.bodies[t.surface].body.shape, sample.scene.bodies[t.mover].body.shape)},
+                          {"surfaceMoves", sample.scene.bodies[t.surface].body.motion == MotionType::Dynamic}});
+    }
+    j["thrown"] = thrown;
+    j["restitutionZero"] = sample.restitutionZero;
+    j["settledSpeed"] = kSettledSpeed;
+    return j;
+}
+
+}  // namespace
+
+class TestSamplePorts : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void sceneFilesAreThePorts_data();
+    void sceneFilesAreThePorts();
+    void holdsAtTheDefaults_data();
+    void holdsAtTheDefaults();
+};
+
+// The suite's table covers every port of support/worlds.h, in its order.
+void TestSamplePorts::initTestCase() {
+    const std::vector<PortedSample> samples = allPortedSamples();
+    const std::vector<Port> table = ports();
+    QCOMPARE(table.size(), samples.size());
+    for (std::size_t i = 0; i < samples.size(); ++i) QCOMPARE(table[i].build().name, samples[i].name);
+}
+
+void TestSamplePorts::sceneFilesAreThePorts_data() {
+    QTest::addColumn<int>("index");
+    const std::vector<PortedSample> samples = allPortedSamples();
+    for (std::size_t i = 0; i < samples.size(); ++i) QTest::newRow(samples[i].name.c_str()) << static_cast<int>(i);
+}
+
+// scenes/ports/NAME.json loads, with no warning, to exactly the scene the builder makes.
+void TestSamplePorts::sceneFilesAreThePorts() {
+    QFETCH(int, index);
+    const Port port = ports()[static_cast<std::size_t>(index)];
+    const PortedSample sample = port.build();
+    const std::filesystem::path path = portScenePath(sample.name);
+    if (qEnvironmentVariableIsSet("INTERPLAY_WRITE_PORT_SCENES")) {
+        std::filesystem::create_directories(path.parent_path());
+        std::ofstream(path) << portSceneText(sample.scene);
+    }
+    if (const QByteArray dir = qgetenv("INTERPLAY_PORT_CHECKS_DIR"); !dir.isEmpty()) {
+        std::filesystem::create_directories(dir.toStdString());
+        std::ofstream(std::filesystem::path(dir.toStdString()) / (sample.name + ".checks.json")) << checksJson(sample, port).dump(1) << '\n';
+    }
+    const SceneLoadResult loaded = loadSceneFile(path);
+    QVERIFY2(loaded.ok(), qPrintable(QString("%1 does not load (INTERPLAY_WRITE_PORT_SCENES=1 rewrites it)").arg(path.c_str())));
+    for (const Diagnostic& d : loaded.diagnostics) QFAIL(d.toString().c_str());
+    QVERIFY2(serializeScene(*loaded.scene) == serializeScene(sample.scene),
+             qPrintable(QString("%1 differs from the builder (INTERPLAY_WRITE_PORT_SCENES=1 rewrites it)").arg(path.c_str())));
+}
+
+void TestSamplePorts::holdsAtTheDefaults_data() {
+    QTest::addColumn<int>("index");
+    const std::vector<PortedSample> samples = allPortedSamples();
+    for (std::size_t i = 0; i < samples.size(); ++i) QTest::newRow(samples[i].name.c_str()) << static_cast<int>(i);
+}
+
+void TestSamplePorts::holdsAtTheDefaults() {
+    QFETCH(int, index);
+    const Port port = ports()[static_cast<std::size_t>(index)];
+    const PortedSample sample = port.build();
+    WorldSettings defaults;
+    defaults.gravity = sample.scene.settings.gravity;
+    QVERIFY(sample.scene.settings == defaults);  // nothing but the sample's gravity is set
+    QElapsedTimer timer;
+    timer.start();
+    const Figures f = measure(sample, port.seconds);
+    QStringList figures;
+    for (const Check& c : port.checks) figures << QString("%1 %2 (bound %3)").arg(kindName(c.kind), describe(c.kind, f)).arg(c.bound);
+    qInfo("%s, %g s (%.1f s to run): %s", sample.name.c_str(), port.seconds, timer.elapsed() / 1000.0, qPrintable(figures.join("; ")));
+    for (const Check& c : port.checks) {
+        if (c.knownFailure) QEXPECT_FAIL("", c.knownFailure, Continue);
+        QVERIFY2(f.of(c.kind) <= c.bound,
+                 qPrintable(QString("%1: %2, bound %3").arg(kindName(c.kind), describe(c.kind, f)).arg(c.bound)));
+    }
+}
+
+QTEST_APPLESS_MAIN(TestSamplePorts)
+#include "test_sample_ports.moc"
