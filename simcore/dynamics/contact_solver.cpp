@@ -512,7 +512,7 @@ void ContactSolver::warmStart(BodyStorage& bodies) {
     storeVelocities(bodies);
 }
 
-void ContactSolver::solve(BodyStorage& bodies, bool useBias) {
+bool ContactSolver::solve(BodyStorage& bodies, bool useBias) {
     loadVelocities(bodies);
     loadMotion(bodies);
     Correction correction;
@@ -538,6 +538,9 @@ void ContactSolver::solve(BodyStorage& bodies, bool useBias) {
     const bool relaxes = params_.solver.positionCorrection == PositionCorrection::SoftStep && params_.solver.positionIterations > 0;
     const bool frictionInPass = useBias != relaxes;
 
+    const FloatW settleTolerance = FloatW::splat(kRelaxTolerance);
+    const FloatW deepOverlap = FloatW::splat(-params_.contact.linearSlop);
+    FloatW largestExcess = FloatW::splat(-1.0f);
     float* rows = velocities_.data()->value;
     const float* motion = motion_.data()->value;
     for (ManifoldBatch& c : batches_) {
@@ -574,6 +577,10 @@ void ContactSolver::solve(BodyStorage& bodies, bool useBias) {
             p.normalImpulse = accumulated;
             applyImpulse(v, normal * delta, angularA * delta, angularB * delta, c.inverseMassA, c.inverseMassB,
                          inverseInertiaA, inverseInertiaB);
+            // The velocity this row changed, beyond the tolerance (delta / normalMass, kept as a product).
+            // Only where the bodies overlap beyond the slop, where the velocity passes pushed.
+            largestExcess = simd::max(largestExcess, select(separation < deepOverlap, simd::max(delta, -delta) - settleTolerance * p.normalMass,
+                                                            FloatW::splat(-1.0f)));
         }
 
         if ((c.anyFriction || c.anyRolling) && frictionInPass) {
@@ -603,6 +610,7 @@ void ContactSolver::solve(BodyStorage& bodies, bool useBias) {
         scatterVelocities(rows, c.bodyA, c.bodyB, v);
     }
     storeVelocities(bodies);
+    return simd::any(largestExcess > zero);
 }
 
 void ContactSolver::currentInverseInertia(const std::int32_t (&solverBodies)[kLanes], const BodyStorage& bodies,

@@ -50,7 +50,14 @@ public:
     // bodies take part with infinite mass.
     void prepare(const std::vector<Contact>& contacts, const BodyStorage& bodies, const Params& params);
     void warmStart(BodyStorage& bodies);
-    void solve(BodyStorage& bodies, bool useBias);
+    // Returns whether some normal row still changed a relative velocity by more than
+    // kRelaxTolerance: in a relax pass, push velocity is still being taken out.
+    bool solve(BodyStorage& bodies, bool useBias);
+    // m/s. Relax passes beyond the configured ones, up to kMaxExtraRelaxPasses, run while a pass
+    // still takes out more than this: deep overlaps in a stack leave push velocity that one pass
+    // cannot remove, and ten cubes overlapping by a quarter threw the top one at 6.5 m/s.
+    static constexpr float kRelaxTolerance = 0.1f;
+    static constexpr int kMaxExtraRelaxPasses = 3;
     // When the collision pass runs: after the substep's velocity update and before the position
     // update (the first substep), or after the position update.
     enum class ImpactTiming { BeforePositions, AfterPositions };

@@ -365,10 +365,12 @@ void World::step() {
         }
         if (relax || solveJoints) {
             ScopedStageTimer timer(slot(Stage::SolveConstraints));
+            bool pushLeft = false;
             for (int i = 0; i < settings_.solver.positionIterations; ++i) {
                 if (solveJoints) jointSolver_.solve(bodies_, false);
-                if (relax) contactSolver_.solve(bodies_, false);
+                if (relax) pushLeft = contactSolver_.solve(bodies_, false);
             }
+            for (int i = 0; pushLeft && i < ContactSolver::kMaxExtraRelaxPasses; ++i) pushLeft = contactSolver_.solve(bodies_, false);
         }
     }
     if (solveJoints) {
