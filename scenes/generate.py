@@ -12,6 +12,7 @@ dt = 1/60 (written as 0.016666668, the float nearest 1/60), friction 0.6, restit
 1 kg unit cubes, a static ground box of half extents (50, 0.5, 50) at y = -0.5.
   pile1k     1000 cubes, 10x10x10 grid, spacing 1.2, lowest centres at y = 2, centred on x/z = 0
   pyramid10  385 cubes, layers 10x10 ... 1x1, each cube resting exactly on the layer below, sleep off
+  pyramid20  2870 cubes, the same with base 20 (bench only)
   mixed1k    as pile1k, cycling box / sphere r 0.5 / capsule r 0.3 hh 0.4 / cylinder r 0.5 hh 0.5
   tower20    20 cubes stacked exactly (centres y = 0.5 + i), sleep off
 They set no solver, substep or effect keys: "one step per frame" means one World::step per 1/60 s,
@@ -295,13 +296,22 @@ def mixed1k(colored):
 def pyramid10(colored):
     """Base 10: layer L (0 = bottom) is (10 - L) x (10 - L) cubes, centres y = 0.5 + L, neighbours
     touching face to face (spacing 1), centred on x = z = 0. 385 cubes. Sleep off."""
+    return square_pyramid(10, colored)
+
+
+def pyramid20():
+    """As pyramid10 with base 20: 2870 cubes, 20 layers. Sleep off."""
+    return square_pyramid(20, False)
+
+
+def square_pyramid(base, colored):
     bodies = [ground(color=GROUND_COLOR if colored else None)]
-    for layer in range(10):
-        n = 10 - layer
+    for layer in range(base):
+        n = base - layer
         for k in range(n):
             for i in range(n):
                 p = [i - (n - 1) / 2, 0.5 + layer, k - (n - 1) / 2]
-                color = hsv(0.08 + 0.07 * layer, 0.6, 0.93) if colored else None
+                color = hsv(0.08 + 0.7 * layer / base, 0.6, 0.93) if colored else None
                 bodies.append(body("cube L%d %d %d" % (layer, i, k), UNIT_CUBE, p, mass=1, friction=0.6,
                                    restitution=0, color=color))
     return scene(settings(sleep=False), bodies)
@@ -679,6 +689,7 @@ def all_scenes():
         "bench/pyramid10.json": pyramid10(False),
         "bench/mixed1k.json": mixed1k(False),
         "bench/tower20.json": tower20(False),
+        "bench/pyramid20.json": pyramid20(),
         "pile1k.json": pile1k(True),
         "pyramid10.json": pyramid10(True),
         "mixed1k.json": mixed1k(True),
