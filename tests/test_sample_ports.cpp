@@ -43,7 +43,7 @@ using namespace test_support;
 
 namespace {
 
-enum class Kind { Sideways, Height, NoLaunch, Settles, NoTunnel, NoRebound };
+enum class Kind { Sideways, Height, NoLaunch, Settles, NoTunnel, NoRebound, Overlap };
 
 const char* kindName(Kind kind) {
     switch (kind) {
@@ -53,6 +53,7 @@ const char* kindName(Kind kind) {
         case Kind::Settles: return "settles";
         case Kind::NoTunnel: return "noTunnel";
         case Kind::NoRebound: return "noRebound";
+        case Kind::Overlap: return "overlap";
     }
     return "?";
 }
@@ -139,6 +140,10 @@ std::vector<Port> ports() {
           noTunnel,
           noRebound("HeavyOnLight: restitution 0, yet the 45:1 box leaves its light one upward at 8.86 m/s "
                     "(Box3D 8.38 m/s), bound 0.1 m/s; issue 12")}},
+        {box3dEdgeCrossing, 3.0f,
+         {{Kind::Overlap, 0.01f,
+           "Edge Crossing: an edge contact is one point, so a bar that lands on an edge and spins brings its "
+           "other end 3.9 cm into the bar below within a step (Box3D 2.8 cm), bound 1 cm; issue 12"}}},
         {joltHighSpeed, 2.0f,
          {noTunnel, noRebound("HighSpeed: the flat bar thrown down at 100 m/s with restitution 0 leaves the floor at "
                               "3.30 m/s (Box3D 6.50 m/s), bound 0.1 m/s; issue 12")}},
@@ -252,6 +257,7 @@ struct Figures {
     std::string tunnelWhat;
     float rebound = 0.0f;     // no rebound: largest upward speed of a restitution-0 body, m/s
     std::string reboundBody;
+    float overlap = 0.0f;     // overlap: deepest contact point over the run (at each step's prepare), m
 
     float of(Kind kind) const {
         switch (kind) {
@@ -261,6 +267,7 @@ struct Figures {
             case Kind::Settles: return finalSpeed;
             case Kind::NoTunnel: return static_cast<float>(tunnels);
             case Kind::NoRebound: return rebound;
+            case Kind::Overlap: return overlap;
         }
         return 0.0f;
     }
@@ -289,6 +296,7 @@ Figures measure(const PortedSample& sample, float seconds) {
     for (int step = 0, n = stepsFor(world, seconds); step < n; ++step) {
         world.step();
         observe();
+        f.overlap = std::max(f.overlap, world.lastStepProfile().maxPenetration);
         for (std::size_t i : dynamic) {
             const float speed = glm::length(world.linearVelocity(ids[i]));
             if (speed > f.peakSpeed) f.peakSpeed = speed, f.peakBody = sample.scene.bodies[i].body.name;
@@ -324,6 +332,7 @@ QString describe(Kind kind, const Figures& f) {
         case Kind::Settles: return QString("%1 m/s at the end").arg(f.finalSpeed, 0, 'f', 3);
         case Kind::NoTunnel: return QString("%1 crossed (%2)").arg(f.tunnels).arg(f.tunnelWhat.c_str());
         case Kind::NoRebound: return QString("up at %1 m/s (%2)").arg(f.rebound, 0, 'f', 3).arg(f.reboundBody.c_str());
+        case Kind::Overlap: return QString("%1 m deep").arg(f.overlap, 0, 'f', 4);
     }
     return {};
 }

@@ -527,11 +527,36 @@ inline PortedSample joltHighSpeed() {
     return s;
 }
 
+// Box3D Stacking "Edge Crossing": three rows of 21 thin bars (half extents 0.2 x 0.02 x 0.04 m,
+// lying flat or on edge) with a second bar dropped across each from 20 half-thicknesses up,
+// turned about a nearly vertical axis by -pi ... pi in steps of pi / 10, so that bars meet edge
+// on at every angle. Where each dropped bar comes to rest is left open: the check is the overlap.
+inline PortedSample box3dEdgeCrossing() {
+    PortedSample s = portedSample("box3d_edge_crossing", 10.0f);
+    addPortGround(s, 40.0f, 0.6f);
+    const Vec3 flat(0.2f, 0.02f, 0.04f), onEdge(0.2f, 0.04f, 0.02f);
+    const Vec3 axis = glm::normalize(Vec3(0.1f, 0.9f, 0.0f));
+    const struct Row {
+        float z;
+        Vec3 lower, upper;
+    } rows[] = {{-2.0f, flat, flat}, {0.0f, onEdge, onEdge}, {2.0f, flat, onEdge}};
+    for (const Row& row : rows) {
+        for (int k = 0; k <= 20; ++k) {
+            const float x = -10.0f + float(k);
+            s.add(portBody("bar", Shape::box(row.lower), Vec3(x, row.lower.y, row.z), 0.6f));
+            BodyCreationSettings dropped = portBody("dropped bar", Shape::box(row.upper), Vec3(x, 20.0f * row.lower.y, row.z), 0.6f);
+            dropped.orientation = aboutAxis(-kPi + 0.1f * kPi * float(k), axis);
+            s.add(dropped);
+        }
+    }
+    return s;
+}
+
 // Every port, in the order of the suite.
 inline std::vector<PortedSample> allPortedSamples() {
     return {box3dHighMassRatio1(), box2dHighMassRatio(2), box2dHighMassRatio(3), box3dTinyPyramid(), box3dOverlapRecovery(),
             box3dCardHouse(), box3dJenga(), box3dCylinderStack(), box3dCapsuleStack(), box3dWheelStack(),
-            joltHeavyOnLight(), joltHighSpeed()};
+            joltHeavyOnLight(), box3dEdgeCrossing(), joltHighSpeed()};
 }
 
 }  // namespace test_support
