@@ -579,8 +579,8 @@ bool ContactSolver::solve(BodyStorage& bodies, bool useBias) {
                          inverseInertiaA, inverseInertiaB);
             // The velocity this row changed, beyond the tolerance (delta / normalMass, kept as a product).
             // Only where the bodies overlap beyond the slop, where the velocity passes pushed.
-            largestExcess = simd::max(largestExcess, select(separation < deepOverlap, simd::max(delta, -delta) - settleTolerance * p.normalMass,
-                                                            FloatW::splat(-1.0f)));
+            const FloatW excess = simd::max(delta, -delta) - settleTolerance * p.normalMass;
+            largestExcess = simd::max(largestExcess, select(separation < deepOverlap, excess, FloatW::splat(-1.0f)));
         }
 
         if ((c.anyFriction || c.anyRolling) && frictionInPass) {
