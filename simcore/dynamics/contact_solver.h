@@ -8,7 +8,7 @@
 // Within one World::step the solver is used as:
 //   prepare (once) -> for each substep { [resolveCollisions, first substep only], warmStart,
 //   solve(useBias=true) x N, [positions move], [resolveCollisions], relax = solve(useBias=false)
-//   x M } -> storeImpulses,
+//   x M, and up to kMaxExtraRelaxPasses more while a deep overlap still pushes } -> storeImpulses,
 // with resolveCollisions only when usesRestitution(). Friction and rolling resistance are solved
 // in the relax passes (in the velocity passes when there are none).
 //
