@@ -14,7 +14,7 @@
 #include "simcore/shapes/shape.h"
 #include "simcore/world/profiler.h"
 #include "simcore/world/world.h"
-#include "simcore/world/world_settings.h"
+#include "simcore/world_settings.h"
 
 #include <algorithm>
 #include <chrono>

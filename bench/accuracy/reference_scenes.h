@@ -4,7 +4,7 @@
 // a closed form where physics gives one, otherwise a converged run of the same scene.
 
 #include "simcore/world/world.h"
-#include "simcore/world/world_settings.h"
+#include "simcore/world_settings.h"
 
 #include <functional>
 #include <string>

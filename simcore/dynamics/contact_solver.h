@@ -24,11 +24,11 @@
 // arrays form. A batch is solved in one pass of wide arithmetic; colours run one after another,
 // which is Gauss-Seidel between colours and exact within one (its lanes touch disjoint bodies).
 
-#include "simcore/collision/contact_manager.h"
+#include "simcore/dynamics/contact_manager.h"
 #include "simcore/dynamics/body_storage.h"
 #include "simcore/dynamics/constraint_math.h"
 #include "simcore/math/simd.h"
-#include "simcore/world/world_settings.h"
+#include "simcore/world_settings.h"
 
 #include <cstdint>
 #include <vector>

@@ -4,7 +4,7 @@
 // awake dynamic bodies move under forces; kinematic bodies move by their velocity.
 
 #include "simcore/dynamics/body_storage.h"
-#include "simcore/world/world_settings.h"
+#include "simcore/world_settings.h"
 
 #include <cstdint>
 #include <vector>

@@ -3,10 +3,10 @@
 // bodies, and the world, do not join islands, or the whole floor would be one island). An island
 // sleeps only as a whole, and wakes as a whole when any of its bodies is awake.
 
-#include "simcore/collision/contact_manager.h"
+#include "simcore/dynamics/contact_manager.h"
 #include "simcore/dynamics/body_storage.h"
 #include "simcore/dynamics/joint_storage.h"
-#include "simcore/world/world_settings.h"
+#include "simcore/world_settings.h"
 
 #include <algorithm>
 #include <cstdint>

@@ -14,7 +14,7 @@
 #include "simcore/dynamics/body_storage.h"
 #include "simcore/dynamics/constraint_math.h"
 #include "simcore/dynamics/joint_storage.h"
-#include "simcore/world/world_settings.h"
+#include "simcore/world_settings.h"
 
 #include <vector>
 

@@ -5,7 +5,7 @@
 #include "simcore/dynamics/body.h"
 #include "simcore/dynamics/joint.h"
 #include "simcore/world/world.h"
-#include "simcore/world/world_settings.h"
+#include "simcore/world_settings.h"
 
 #include <optional>
 #include <vector>

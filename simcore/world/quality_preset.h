@@ -4,7 +4,7 @@
 // accuracy knobs listed in applyQualityPreset; gravity, materials, damping, sleep and effects stay
 // as the scene has them. Balanced is the engine's defaults.
 
-#include "simcore/world/world_settings.h"
+#include "simcore/world_settings.h"
 
 #include <array>
 #include <optional>

@@ -3,7 +3,7 @@
 // does, in order; see world.cpp.
 
 #include "simcore/collision/broad_phase.h"
-#include "simcore/collision/contact_manager.h"
+#include "simcore/dynamics/contact_manager.h"
 #include "simcore/dynamics/body_storage.h"
 #include "simcore/dynamics/contact_solver.h"
 #include "simcore/dynamics/integrator.h"
@@ -11,7 +11,7 @@
 #include "simcore/dynamics/joint_solver.h"
 #include "simcore/dynamics/joint_storage.h"
 #include "simcore/world/profiler.h"
-#include "simcore/world/world_settings.h"
+#include "simcore/world_settings.h"
 
 #include <array>
 #include <optional>

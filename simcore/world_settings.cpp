@@ -1,4 +1,4 @@
-#include "simcore/world/world_settings.h"
+#include "simcore/world_settings.h"
 
 namespace simcore {
 

@@ -1,4 +1,4 @@
-#include "simcore/collision/contact_manager.h"
+#include "simcore/dynamics/contact_manager.h"
 
 #include "simcore/collision/collide_shapes.h"
 
