@@ -8,6 +8,8 @@
 #include "simcore/collision/time_of_impact.h"
 #include "simcore/world/world.h"
 
+#include "support/worlds.h"
+
 #include <QtTest>
 
 #include <cmath>
@@ -204,11 +206,7 @@ void TestCcd::thinSpinningPlankNeverPassesStack() {
 // 4 mm), and with restitution 0 it never leaves upward faster than 0.1 m/s (measured 0.001 m/s).
 void TestCcd::diagonalBarAt100MetresPerSecondStopsAtTheFloor() {
     World world;
-    BodyCreationSettings ground;
-    ground.motion = MotionType::Static;
-    ground.shape = Shape::box(Vec3(50.0f, 0.5f, 50.0f));
-    ground.position = Vec3(0.0f, -0.5f, 0.0f);
-    world.createBody(ground);
+    test_support::addGround(world, BodyCreationSettings{}.friction);
     const Vec3 half(1.0f, 0.05f, 0.05f);
     BodyCreationSettings bar;
     bar.shape = Shape::box(half);

@@ -14,16 +14,12 @@ using simd::MaskW;
 using simd::SymMat3W;
 using simd::Vec3W;
 
-// Friction tangents. While the bodies slip, the first tangent follows the slip: each row then has
-// its own effective mass, and with axes at an angle to the slip the two rows' updates would not be
-// parallel to it, so the clamped friction would point off the slip direction and come out weak (3.6 %
-// on a box sliding down a 30-degree incline). Without slip any continuous basis serves.
-void frictionAxes(const ContactManifold& manifold, const BodyStorage& bodies, std::size_t a, std::size_t b, Vec3& t1,
+// Friction tangents for a manifold with friction centre `centre`. While the bodies slip there, the
+// first tangent follows the slip: with axes at an angle to it, the clamped friction pointed off the
+// slip direction and came out weak (3.6 % on a box sliding down a 30-degree incline, with the rows
+// solved one after the other). Without slip any continuous basis serves.
+void frictionAxes(const Vec3& n, const Vec3& centre, const BodyStorage& bodies, std::size_t a, std::size_t b, Vec3& t1,
                   Vec3& t2) {
-    const Vec3& n = manifold.normal;
-    Vec3 centre(0.0f);
-    for (int i = 0; i < manifold.pointCount; ++i) centre += manifold.points[i].pointA + manifold.points[i].pointB;
-    centre *= 0.5f / static_cast<float>(manifold.pointCount);
     const Vec3 relative = bodies.linearVelocity[b] + glm::cross(bodies.angularVelocity[b], centre - bodies.centerOfMass[b]) -
                           bodies.linearVelocity[a] - glm::cross(bodies.angularVelocity[a], centre - bodies.centerOfMass[a]);
     const Vec3 slip = relative - glm::dot(relative, n) * n;
@@ -371,9 +367,13 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const BodyStor
         setLanes(batch.inverseInertiaA, lane, inverseInertiaA);
         setLanes(batch.inverseInertiaB, lane, inverseInertiaB);
 
+        // The friction centre: the mean of the points, each midway between the surfaces.
+        Vec3 centre(0.0f);
+        for (int i = 0; i < manifold.pointCount; ++i) centre += manifold.points[i].pointA + manifold.points[i].pointB;
+        centre *= 0.5f / static_cast<float>(manifold.pointCount);
         const Vec3& normal = manifold.normal;
         Vec3 tangent1, tangent2;
-        frictionAxes(manifold, bodies, a, b, tangent1, tangent2);
+        frictionAxes(normal, centre, bodies, a, b, tangent1, tangent2);
         setLanes(batch.normal, lane, normal);
         setLanes(batch.tangent1, lane, tangent1);
         setLanes(batch.tangent2, lane, tangent2);
@@ -398,9 +398,6 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const BodyStor
             usesFriction_ = true;
         }
 
-        Vec3 centre(0.0f);
-        for (int i = 0; i < manifold.pointCount; ++i) centre += manifold.points[i].pointA + manifold.points[i].pointB;
-        centre *= 0.5f / static_cast<float>(manifold.pointCount);
         setLanes(batch.centerA, lane, centre - bodies.centerOfMass[a]);
         setLanes(batch.centerB, lane, centre - bodies.centerOfMass[b]);
         if (friction > 0.0f) {
