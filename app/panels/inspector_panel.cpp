@@ -28,7 +28,7 @@
 namespace interplay {
 namespace {
 
-// Accepted ranges, as the scene format documents them (README "Scene format"): outside them the
+// Accepted ranges, as the scene format documents them (docs/scene-format.md): outside them the
 // file would be refused on load, so the editor does not let them in either.
 constexpr double kMinSize = 1e-4, kMaxSize = 1e5;               // m
 constexpr double kMaxCoordinate = 1e6;                          // m
@@ -632,7 +632,7 @@ void InspectorPanel::refreshBodies() {
     m_shapeType->setCurrentIndex(m_shapeType->findData(static_cast<int>(lead.body.shape.type)));
     m_motion->setCurrentIndex(m_motion->findData(static_cast<int>(lead.body.motion)));
     m_massMode->setCurrentIndex(lead.body.mass ? 0 : 1);
-    // The field takes what a scene file accepts for what it holds (README "Scene format").
+    // The field takes what a scene file accepts for what it holds (docs/scene-format.md).
     if (lead.body.mass) numberField(QStringLiteral("mass"))->setRange(kMinMass, kMaxMass);
     else numberField(QStringLiteral("mass"))->setRange(kMinDensity, kMaxDensity);
     if (lead.body.shape.hull) {
