@@ -20,7 +20,6 @@ void swapRemove(std::size_t i, Arrays&... arrays) {
 }  // namespace
 
 BodyId BodyStorage::add(const BodyCreationSettings& settings, const MassProperties& massProperties) {
-    const bool isDynamic = settings.motion == MotionType::Dynamic;
     const Quat q = glm::normalize(settings.orientation);
 
     const std::size_t dense = size();
@@ -30,14 +29,14 @@ BodyId BodyStorage::add(const BodyCreationSettings& settings, const MassProperti
     angularVelocity.push_back(settings.motion == MotionType::Static ? Vec3(0.0f) : settings.angularVelocity);
     force.emplace_back(0.0f);
     torque.emplace_back(0.0f);
-    mass.push_back(isDynamic ? massProperties.mass : 0.0f);
-    inverseMass.push_back(isDynamic ? 1.0f / massProperties.mass : 0.0f);
-    inertiaLocal.push_back(isDynamic ? massProperties.inertia : Mat3(0.0f));
-    // Inverted in double: the determinant of a tiny body's tensor (a 0.1 mm bead's moments are
-    // about 4e-15 kg m^2) underflows float.
-    inverseInertiaLocal.push_back(isDynamic ? Mat3(glm::inverse(glm::dmat3(massProperties.inertia))) : Mat3(0.0f));
+    mass.push_back(0.0f);
+    inverseMass.push_back(0.0f);
+    inertiaLocal.emplace_back(0.0f);
+    inverseInertiaLocal.emplace_back(0.0f);
     inverseInertiaWorld.emplace_back(0.0f);
-    localCenterOfMass.push_back(massProperties.centerOfMass);
+    localCenterOfMass.emplace_back(0.0f);
+    massSetting.push_back(settings.mass);
+    density.push_back(settings.density);
     motion.push_back(settings.motion);
     shape.push_back(settings.shape);
     friction.push_back(settings.friction);
@@ -49,9 +48,21 @@ BodyId BodyStorage::add(const BodyCreationSettings& settings, const MassProperti
     name.push_back(settings.name);
     proxy.push_back(0);
     bounds.push_back(worldBounds(settings.shape, Transform{settings.position, q}));
+    setMassProperties(dense, massProperties);
     refreshInverseInertiaWorld(dense);
 
     return slots_.add();
+}
+
+void BodyStorage::setMassProperties(std::size_t i, const MassProperties& massProperties) {
+    const bool isDynamic = motion[i] == MotionType::Dynamic;
+    mass[i] = isDynamic ? massProperties.mass : 0.0f;
+    inverseMass[i] = isDynamic ? 1.0f / massProperties.mass : 0.0f;
+    inertiaLocal[i] = isDynamic ? massProperties.inertia : Mat3(0.0f);
+    // Inverted in double: the determinant of a tiny body's tensor (a 0.1 mm bead's moments are
+    // about 4e-15 kg m^2) underflows float.
+    inverseInertiaLocal[i] = isDynamic ? Mat3(glm::inverse(glm::dmat3(massProperties.inertia))) : Mat3(0.0f);
+    localCenterOfMass[i] = massProperties.centerOfMass;
 }
 
 void BodyStorage::remove(BodyId id) {
@@ -61,7 +72,7 @@ void BodyStorage::remove(BodyId id) {
     const auto i = static_cast<std::size_t>(dense);
     swapRemove(i, centerOfMass, orientation, linearVelocity, angularVelocity, force, torque, mass,
                inverseMass, inertiaLocal, inverseInertiaLocal, inverseInertiaWorld,
-               localCenterOfMass, motion, shape, friction, restitution, rollingResistance, ccd, awake, sleepTime,
+               localCenterOfMass, massSetting, density, motion, shape, friction, restitution, rollingResistance, ccd, awake, sleepTime,
                name, proxy, bounds);
     slots_.removeAt(i);
 }

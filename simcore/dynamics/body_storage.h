@@ -6,6 +6,7 @@
 #include "simcore/dynamics/body.h"
 #include "simcore/dynamics/slot_map.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,10 @@ public:
     std::vector<Mat3> inverseInertiaLocal;   // zero for static and kinematic bodies
     std::vector<Mat3> inverseInertiaWorld;   // R I^-1 R^T, refreshed when orientation changes
     std::vector<Vec3> localCenterOfMass;     // body origin -> centre of mass, body frame (m)
+    // What the mass was made from, kept for every body so a change of shape or motion type
+    // can recompute it (a static body turned dynamic gets the mass it was authored with).
+    std::vector<std::optional<float>> massSetting;  // kg, when given; else from density
+    std::vector<float> density;              // kg/m^3, used when massSetting is unset
     std::vector<MotionType> motion;
     std::vector<Shape> shape;
     std::vector<float> friction;
@@ -52,6 +57,9 @@ public:
     Vec3 origin(std::size_t i) const { return centerOfMass[i] - orientation[i] * localCenterOfMass[i]; }
     Transform transform(std::size_t i) const { return {origin(i), orientation[i]}; }
     void refreshInverseInertiaWorld(std::size_t i);
+    // Sets mass, inertia and the local centre of mass (zero mass and inertia unless dynamic);
+    // the caller keeps the centre of mass and the world inertia in step.
+    void setMassProperties(std::size_t i, const MassProperties& massProperties);
 
 private:
     SlotMap<BodyId> slots_;

@@ -49,6 +49,14 @@ std::array<ContactImpulse, kMaxManifoldPoints> matchImpulses(const ContactManifo
     return impulses;
 }
 
+// The contact's material from its bodies' (dense indices a and b).
+void combineMaterials(Contact& contact, const BodyStorage& bodies, std::size_t a, std::size_t b) {
+    contact.friction = combineFriction(bodies.friction[a], bodies.friction[b]);
+    contact.restitution = combineRestitution(bodies.restitution[a], bodies.restitution[b]);
+    contact.rollingLever = combineRollingResistance(bodies.rollingResistance[a], rollingRadius(bodies.shape[a]),
+                                                    bodies.rollingResistance[b], rollingRadius(bodies.shape[b]));
+}
+
 }  // namespace
 
 float combineFriction(float a, float b) { return std::sqrt(a * b); }
@@ -79,10 +87,7 @@ std::size_t ContactManager::addPairs(const std::vector<BodyPair>& pairs, const B
         Contact contact;
         contact.slotA = pair.a;
         contact.slotB = pair.b;
-        contact.friction = combineFriction(bodies.friction[a], bodies.friction[b]);
-        contact.restitution = combineRestitution(bodies.restitution[a], bodies.restitution[b]);
-        contact.rollingLever = combineRollingResistance(bodies.rollingResistance[a], rollingRadius(bodies.shape[a]),
-                                                        bodies.rollingResistance[b], rollingRadius(bodies.shape[b]));
+        combineMaterials(contact, bodies, a, b);
         pairToContact_.insert(key, static_cast<std::uint32_t>(contacts_.size()));
         contact.dynamicPair = dynamicA && dynamicB;
         contacts_.push_back(contact);
@@ -164,6 +169,13 @@ void ContactManager::removeContactsOf(std::uint32_t slot) {
         } else {
             ++c;
         }
+    }
+}
+
+void ContactManager::refreshMaterials(std::uint32_t slot, const BodyStorage& bodies) {
+    for (Contact& contact : contacts_) {
+        if (contact.slotA != slot && contact.slotB != slot) continue;
+        combineMaterials(contact, bodies, bodies.denseIndexOfSlot(contact.slotA), bodies.denseIndexOfSlot(contact.slotB));
     }
 }
 

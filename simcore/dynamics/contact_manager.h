@@ -64,6 +64,9 @@ public:
                          float timeStep);
 
     void removeContactsOf(std::uint32_t slot);
+    // Recombines friction, restitution and rolling resistance of the contacts of one body slot after
+    // the body's material changed; manifolds and accumulated impulses stay (warm starts intact).
+    void refreshMaterials(std::uint32_t slot, const BodyStorage& bodies);
     // Drops the contact of one pair of body slots, if there is one (a joint between them that
     // turns their collision off).
     void removePair(std::uint32_t slotA, std::uint32_t slotB);

@@ -81,6 +81,9 @@ struct DistanceLengths {
     float max = 0.0f;
 };
 DistanceLengths distanceLengths(const JointCreationSettings& settings);
+// The same from the rest length (m) and the joint's options, for a joint that already exists.
+DistanceLengths distanceLengths(float restLength, bool hasSpring, std::optional<float> minLength,
+                                std::optional<float> maxLength);
 
 // How far a joint is from satisfied: the worst of its position rows (m) and angle rows (rad),
 // limits included.

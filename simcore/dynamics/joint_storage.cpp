@@ -18,10 +18,15 @@ std::string_view jointTypeName(JointType type) {
 }
 
 DistanceLengths distanceLengths(const JointCreationSettings& s) {
+    return distanceLengths(glm::length(s.anchorB - s.anchor), s.spring.has_value(), s.minLength, s.maxLength);
+}
+
+DistanceLengths distanceLengths(float restLength, bool hasSpring, std::optional<float> minLength,
+                                std::optional<float> maxLength) {
     DistanceLengths lengths;
-    lengths.rest = glm::length(s.anchorB - s.anchor);
-    lengths.min = s.minLength.value_or(s.spring ? 0.0f : lengths.rest);
-    lengths.max = s.maxLength.value_or(s.spring ? std::numeric_limits<float>::infinity() : lengths.rest);
+    lengths.rest = restLength;
+    lengths.min = minLength.value_or(hasSpring ? 0.0f : restLength);
+    lengths.max = maxLength.value_or(hasSpring ? std::numeric_limits<float>::infinity() : restLength);
     return lengths;
 }
 
@@ -82,6 +87,8 @@ JointId JointStorage::add(const JointCreationSettings& s, const BodyStorage& bod
     j.restLength = lengths.rest;
     j.minLength = lengths.min;
     j.maxLength = lengths.max;
+    j.minLengthSetting = s.minLength;
+    j.maxLengthSetting = s.maxLength;
     j.collideConnected = s.collideConnected;
 
     joints.push_back(j);

@@ -38,6 +38,10 @@ struct Joint {
     float restLength = 0.0f;  // distance: |anchorB - anchor| at creation (m)
     float minLength = 0.0f;   // distance: effective limits (m); equal for a rigid rod
     float maxLength = std::numeric_limits<float>::infinity();
+    // distance: the limits as given (unset: from the rest length and the spring), so a change of
+    // spring re-derives the effective ones as creation would.
+    std::optional<float> minLengthSetting;
+    std::optional<float> maxLengthSetting;
     bool collideConnected = false;
     JointImpulses impulses;
 };

@@ -39,6 +39,18 @@ void validateShape(const Shape& shape) {
     }
 }
 
+void validateMass(float mass) { require(isPositiveFinite(mass), "mass must be a positive finite number"); }
+void validateDensity(float density) { require(isPositiveFinite(density), "density must be a positive finite number"); }
+void validateFriction(float friction) {
+    require(isFinite(friction) && friction >= 0.0f, "friction must be finite and >= 0");
+}
+void validateRestitution(float restitution) {
+    require(isFinite(restitution) && restitution >= 0.0f && restitution <= 1.0f, "restitution must be in [0, 1]");
+}
+void validateRollingResistance(float coefficient) {
+    require(isFinite(coefficient) && coefficient >= 0.0f, "rollingResistance must be finite and >= 0");
+}
+
 void validateBody(const BodyCreationSettings& s) {
     validateShape(s.shape);
     require(isFinite(s.position), "position must be finite");
@@ -46,12 +58,25 @@ void validateBody(const BodyCreationSettings& s) {
             "orientation must be a finite, non-zero quaternion");
     require(isFinite(s.linearVelocity), "linearVelocity must be finite");
     require(isFinite(s.angularVelocity), "angularVelocity must be finite");
-    if (s.mass) require(isPositiveFinite(*s.mass), "mass must be a positive finite number");
-    require(isPositiveFinite(s.density), "density must be a positive finite number");
-    require(isFinite(s.friction) && s.friction >= 0.0f, "friction must be finite and >= 0");
-    require(isFinite(s.restitution) && s.restitution >= 0.0f && s.restitution <= 1.0f,
-            "restitution must be in [0, 1]");
-    require(isFinite(s.rollingResistance) && s.rollingResistance >= 0.0f, "rollingResistance must be finite and >= 0");
+    if (s.mass) validateMass(*s.mass);
+    validateDensity(s.density);
+    validateFriction(s.friction);
+    validateRestitution(s.restitution);
+    validateRollingResistance(s.rollingResistance);
+}
+
+// A body's mass properties: from its mass or density when dynamic; static and kinematic bodies
+// have infinite mass, and only the centre of mass matters (as the integrated point of a kinematic
+// body). Throws when the shape gives no usable mass.
+MassProperties bodyMassProperties(const Shape& shape, MotionType motion, std::optional<float> mass, float density) {
+    if (motion != MotionType::Dynamic) {
+        MassProperties centreOnly;
+        centreOnly.centerOfMass = massProperties(shape, 1.0f).centerOfMass;
+        return centreOnly;
+    }
+    const MassProperties result = mass ? massPropertiesForMass(shape, *mass) : massProperties(shape, density);
+    require(isPositiveFinite(result.mass), "the shape's mass is not a positive finite number");
+    return result;
 }
 
 void validateSettings(const WorldSettings& s) {
@@ -72,6 +97,44 @@ void validateSettings(const WorldSettings& s) {
     require(isFinite(s.joint.dampingRatio) && s.joint.dampingRatio >= 0.0f, "joint.dampingRatio must be finite and >= 0");
 }
 
+// The options a joint type takes, each checked on its own so the live setters check the same.
+void validateJointLimits(JointType type, const std::optional<JointLimits>& limits) {
+    if (!limits) return;
+    require(type == JointType::Hinge || type == JointType::Slider, "limits apply to hinge and slider joints only");
+    require(isFinite(limits->lower) && isFinite(limits->upper), "limits must be finite");
+    require(limits->lower <= limits->upper, "limits.lower must not exceed limits.upper");
+    if (type == JointType::Hinge)
+        require(limits->lower >= -kPi && limits->upper <= kPi, "hinge limits must lie within [-pi, pi] rad");
+}
+
+void validateJointMotor(JointType type, const std::optional<JointMotor>& motor) {
+    if (!motor) return;
+    require(type == JointType::Hinge || type == JointType::Slider, "motor applies to hinge and slider joints only");
+    require(isFinite(motor->speed), "motor.speed must be finite");
+    require(isFinite(motor->maxForce) && motor->maxForce >= 0.0f, "motor.maxForce must be finite and >= 0");
+}
+
+void validateJointSpring(JointType type, const std::optional<JointSpring>& spring) {
+    if (!spring) return;
+    require(type == JointType::Distance, "spring applies to distance joints only");
+    require(isPositiveFinite(spring->hertz), "spring.hertz must be a positive finite number");
+    require(isFinite(spring->dampingRatio) && spring->dampingRatio >= 0.0f, "spring.dampingRatio must be finite and >= 0");
+}
+
+// A distance joint's limits given its rest length (m) and whether it has a spring.
+void validateJointLengths(JointType type, float restLength, bool hasSpring, std::optional<float> minLength,
+                          std::optional<float> maxLength) {
+    if (minLength || maxLength) {
+        require(type == JointType::Distance, "minLength and maxLength apply to distance joints only");
+        require(!minLength || (isFinite(*minLength) && *minLength >= 0.0f), "minLength must be finite and >= 0");
+        require(!maxLength || (isFinite(*maxLength) && *maxLength >= 0.0f), "maxLength must be finite and >= 0");
+    }
+    if (type == JointType::Distance) {
+        const DistanceLengths lengths = distanceLengths(restLength, hasSpring, minLength, maxLength);
+        require(lengths.min <= lengths.max, "minLength must not exceed maxLength (unset, each is the rest length)");
+    }
+}
+
 // What can be checked without the bodies: numbers, and which options the type takes.
 void validateJoint(const JointCreationSettings& s) {
     const bool hingeOrSlider = s.type == JointType::Hinge || s.type == JointType::Slider;
@@ -82,33 +145,10 @@ void validateJoint(const JointCreationSettings& s) {
         require(glm::length(s.anchorB - s.anchor) >= 1e-4f, "anchorB must be at least 0.1 mm from anchor");
     }
     if (hingeOrSlider) require(isFinite(s.axis) && glm::length(s.axis) > 1e-6f, "axis must be a finite, non-zero vector");
-    if (s.limits) {
-        require(hingeOrSlider, "limits apply to hinge and slider joints only");
-        require(isFinite(s.limits->lower) && isFinite(s.limits->upper), "limits must be finite");
-        require(s.limits->lower <= s.limits->upper, "limits.lower must not exceed limits.upper");
-        if (s.type == JointType::Hinge)
-            require(s.limits->lower >= -kPi && s.limits->upper <= kPi, "hinge limits must lie within [-pi, pi] rad");
-    }
-    if (s.motor) {
-        require(hingeOrSlider, "motor applies to hinge and slider joints only");
-        require(isFinite(s.motor->speed), "motor.speed must be finite");
-        require(isFinite(s.motor->maxForce) && s.motor->maxForce >= 0.0f, "motor.maxForce must be finite and >= 0");
-    }
-    if (s.spring) {
-        require(distance, "spring applies to distance joints only");
-        require(isPositiveFinite(s.spring->hertz), "spring.hertz must be a positive finite number");
-        require(isFinite(s.spring->dampingRatio) && s.spring->dampingRatio >= 0.0f,
-                "spring.dampingRatio must be finite and >= 0");
-    }
-    if (s.minLength || s.maxLength) {
-        require(distance, "minLength and maxLength apply to distance joints only");
-        require(!s.minLength || (isFinite(*s.minLength) && *s.minLength >= 0.0f), "minLength must be finite and >= 0");
-        require(!s.maxLength || (isFinite(*s.maxLength) && *s.maxLength >= 0.0f), "maxLength must be finite and >= 0");
-    }
-    if (distance) {
-        const DistanceLengths lengths = distanceLengths(s);
-        require(lengths.min <= lengths.max, "minLength must not exceed maxLength (unset, each is the rest length)");
-    }
+    validateJointLimits(s.type, s.limits);
+    validateJointMotor(s.type, s.motor);
+    validateJointSpring(s.type, s.spring);
+    validateJointLengths(s.type, distanceLengths(s).rest, s.spring.has_value(), s.minLength, s.maxLength);
 }
 
 }  // namespace
@@ -125,17 +165,8 @@ void World::setSettings(const WorldSettings& settings) {
 
 BodyId World::createBody(const BodyCreationSettings& settings) {
     validateBody(settings);
-    MassProperties massProperties;
-    if (settings.motion == MotionType::Dynamic) {
-        massProperties = settings.mass ? massPropertiesForMass(settings.shape, *settings.mass)
-                                       : simcore::massProperties(settings.shape, settings.density);
-        require(isPositiveFinite(massProperties.mass), "the shape's mass is not a positive finite number");
-    } else {
-        // Static and kinematic bodies have infinite mass; only the centre of mass matters (as
-        // the integrated point of a kinematic body).
-        massProperties.centerOfMass = simcore::massProperties(settings.shape, 1.0f).centerOfMass;
-    }
-    const BodyId id = bodies_.add(settings, massProperties);
+    const MassProperties properties = bodyMassProperties(settings.shape, settings.motion, settings.mass, settings.density);
+    const BodyId id = bodies_.add(settings, properties);
     const std::size_t i = bodies_.size() - 1;
     // Static bodies never move, so their proxies are inactive: pairs need an active side.
     bodies_.proxy[i] = broadPhase_.addProxy(bodies_.bounds[i], id.index, settings.motion != MotionType::Static);
@@ -162,13 +193,7 @@ JointId World::createJoint(const JointCreationSettings& settings) {
     wakeIndex(indexOf(settings.bodyA));
     if (settings.bodyB.isValid()) {
         wakeIndex(indexOf(settings.bodyB));
-        if (!settings.collideConnected) {
-            const std::uint64_t key = PairTable::key(settings.bodyA.index, settings.bodyB.index);
-            const std::uint32_t count = jointFilteredPairs_.find(key);
-            if (count == PairTable::kNotFound) jointFilteredPairs_.insert(key, 1);
-            else jointFilteredPairs_.assign(key, count + 1);
-            contactManager_.removePair(settings.bodyA.index, settings.bodyB.index);
-        }
+        if (!settings.collideConnected) filterJointPair(settings.bodyA, settings.bodyB);
     }
     return id;
 }
@@ -179,8 +204,19 @@ void World::destroyJoint(JointId id) {
     wakeIndex(indexOf(joint.bodyA));
     if (!joint.bodyB.isValid()) return;
     wakeIndex(indexOf(joint.bodyB));
-    if (joint.collideConnected) return;
-    const std::uint64_t key = PairTable::key(joint.bodyA.index, joint.bodyB.index);
+    if (!joint.collideConnected) unfilterJointPair(joint.bodyA, joint.bodyB);
+}
+
+void World::filterJointPair(BodyId a, BodyId b) {
+    const std::uint64_t key = PairTable::key(a.index, b.index);
+    const std::uint32_t count = jointFilteredPairs_.find(key);
+    if (count == PairTable::kNotFound) jointFilteredPairs_.insert(key, 1);
+    else jointFilteredPairs_.assign(key, count + 1);
+    contactManager_.removePair(a.index, b.index);
+}
+
+void World::unfilterJointPair(BodyId a, BodyId b) {
+    const std::uint64_t key = PairTable::key(a.index, b.index);
     const std::uint32_t count = jointFilteredPairs_.find(key);
     if (count > 1) {
         jointFilteredPairs_.assign(key, count - 1);
@@ -188,8 +224,8 @@ void World::destroyJoint(JointId id) {
     }
     jointFilteredPairs_.erase(key);
     // The broad phase reports a pair again only when a proxy moves: mark both moved.
-    broadPhase_.touchProxy(bodies_.proxy[indexOf(joint.bodyA)]);
-    broadPhase_.touchProxy(bodies_.proxy[indexOf(joint.bodyB)]);
+    broadPhase_.touchProxy(bodies_.proxy[indexOf(a)]);
+    broadPhase_.touchProxy(bodies_.proxy[indexOf(b)]);
 }
 
 std::vector<JointId> World::jointIds() const {
@@ -610,6 +646,234 @@ void World::wake(BodyId id) { wakeIndex(indexOf(id)); }
 
 void World::wakeIndex(std::size_t i) {
     if (bodies_.motion[i] != MotionType::Static) setAwake(i, true);
+}
+
+// ---- Live edits of bodies ------------------------------------------------------------------------
+
+float World::friction(BodyId id) const { return bodies_.friction[indexOf(id)]; }
+float World::restitution(BodyId id) const { return bodies_.restitution[indexOf(id)]; }
+float World::rollingResistance(BodyId id) const { return bodies_.rollingResistance[indexOf(id)]; }
+bool World::ccdEnabled(BodyId id) const { return bodies_.ccd[indexOf(id)] != 0; }
+float World::density(BodyId id) const { return bodies_.density[indexOf(id)]; }
+Mat3 World::localInertia(BodyId id) const { return bodies_.inertiaLocal[indexOf(id)]; }
+
+void World::setMotionType(BodyId id, MotionType motion) {
+    const std::size_t i = indexOf(id);
+    if (bodies_.motion[i] == motion) return;
+    // Checked before anything changes: a shape with no usable mass cannot become dynamic.
+    const MassProperties properties =
+        bodyMassProperties(bodies_.shape[i], motion, bodies_.massSetting[i], bodies_.density[i]);
+    wakeContactPartners(i);  // what rested on it, or was pushed by it, must notice
+    bodies_.motion[i] = motion;
+    bodies_.setMassProperties(i, properties);  // the centre of mass is the shape's whatever the motion
+    bodies_.refreshInverseInertiaWorld(i);
+    if (motion == MotionType::Static) {
+        bodies_.linearVelocity[i] = Vec3(0.0f);
+        bodies_.angularVelocity[i] = Vec3(0.0f);
+        bodies_.force[i] = Vec3(0.0f);
+        bodies_.torque[i] = Vec3(0.0f);
+        bodies_.awake[i] = 0;
+        bodies_.sleepTime[i] = 0.0f;
+    } else {
+        bodies_.awake[i] = 1;
+        bodies_.sleepTime[i] = 0.0f;
+    }
+    // Contacts are made only for pairs with a dynamic body and count towards the cap by the
+    // kinds they were made for: they are found again for the new kind.
+    renewCollision(i);
+}
+
+void World::setShape(BodyId id, const Shape& shape) {
+    const std::size_t i = indexOf(id);
+    validateShape(shape);
+    const MassProperties properties =
+        bodyMassProperties(shape, bodies_.motion[i], bodies_.massSetting[i], bodies_.density[i]);
+    const Vec3 origin = bodies_.origin(i);
+    wakeContactPartners(i);
+    bodies_.shape[i] = shape;
+    const bool centreMoved = properties.centerOfMass != bodies_.localCenterOfMass[i];
+    bodies_.setMassProperties(i, properties);
+    // Recomputed only when it moved, so a shape centred like the old one rounds nothing.
+    if (centreMoved) bodies_.centerOfMass[i] = origin + bodies_.orientation[i] * properties.centerOfMass;
+    bodies_.refreshInverseInertiaWorld(i);
+    bodies_.bounds[i] = worldBounds(shape, bodies_.transform(i));
+    // The manifolds name the old shape's features, and its fat box may be far larger.
+    renewCollision(i);
+    wakeIndex(i);
+}
+
+void World::setMass(BodyId id, float mass) {
+    const std::size_t i = indexOf(id);
+    validateMass(mass);
+    const MassProperties properties = bodyMassProperties(bodies_.shape[i], bodies_.motion[i], mass, bodies_.density[i]);
+    bodies_.massSetting[i] = mass;
+    bodies_.setMassProperties(i, properties);
+    bodies_.refreshInverseInertiaWorld(i);
+    wakeIndex(i);
+    wakeContactPartners(i);
+}
+
+void World::setDensity(BodyId id, float density) {
+    const std::size_t i = indexOf(id);
+    validateDensity(density);
+    const MassProperties properties =
+        bodyMassProperties(bodies_.shape[i], bodies_.motion[i], std::nullopt, density);
+    bodies_.massSetting[i].reset();
+    bodies_.density[i] = density;
+    bodies_.setMassProperties(i, properties);
+    bodies_.refreshInverseInertiaWorld(i);
+    wakeIndex(i);
+    wakeContactPartners(i);
+}
+
+void World::setFriction(BodyId id, float friction) {
+    const std::size_t i = indexOf(id);
+    validateFriction(friction);
+    bodies_.friction[i] = friction;
+    contactManager_.refreshMaterials(id.index, bodies_);
+    wakeIndex(i);
+    wakeContactPartners(i);
+}
+
+void World::setRestitution(BodyId id, float restitution) {
+    const std::size_t i = indexOf(id);
+    validateRestitution(restitution);
+    bodies_.restitution[i] = restitution;
+    contactManager_.refreshMaterials(id.index, bodies_);
+    wakeIndex(i);
+    wakeContactPartners(i);
+}
+
+void World::setRollingResistance(BodyId id, float coefficient) {
+    const std::size_t i = indexOf(id);
+    validateRollingResistance(coefficient);
+    bodies_.rollingResistance[i] = coefficient;
+    contactManager_.refreshMaterials(id.index, bodies_);
+    wakeIndex(i);
+    wakeContactPartners(i);
+}
+
+void World::setCcd(BodyId id, bool ccd) {
+    const std::size_t i = indexOf(id);
+    bodies_.ccd[i] = ccd ? 1 : 0;
+    wakeIndex(i);
+}
+
+void World::setName(BodyId id, const std::string& name) { bodies_.name[indexOf(id)] = name; }
+
+void World::wakeContactPartners(std::size_t i) {
+    const std::uint32_t slot = bodies_.idAt(i).index;
+    for (const Contact& contact : contactManager_.contacts()) {
+        if (contact.slotA == slot) wakeIndex(bodies_.denseIndexOfSlot(contact.slotB));
+        else if (contact.slotB == slot) wakeIndex(bodies_.denseIndexOfSlot(contact.slotA));
+    }
+}
+
+void World::renewCollision(std::size_t i) {
+    const std::uint32_t slot = bodies_.idAt(i).index;
+    contactManager_.removeContactsOf(slot);
+    broadPhase_.removeProxy(bodies_.proxy[i]);
+    // As createBody makes it: a new proxy counts as moved, so its pairs come in the next step.
+    const bool active = bodies_.motion[i] != MotionType::Static && bodies_.awake[i];
+    bodies_.proxy[i] = broadPhase_.addProxy(bodies_.bounds[i], slot, active);
+}
+
+// ---- Live edits of joints ------------------------------------------------------------------------
+
+const std::optional<JointLimits>& World::jointLimits(JointId id) const { return joints_.joints[indexOf(id)].limits; }
+const std::optional<JointMotor>& World::jointMotor(JointId id) const { return joints_.joints[indexOf(id)].motor; }
+const std::optional<JointSpring>& World::jointSpring(JointId id) const { return joints_.joints[indexOf(id)].spring; }
+bool World::jointCollidesConnected(JointId id) const { return joints_.joints[indexOf(id)].collideConnected; }
+Vec3 World::jointLocalAnchorA(JointId id) const { return joints_.joints[indexOf(id)].localAnchorA; }
+Vec3 World::jointLocalAnchorB(JointId id) const { return joints_.joints[indexOf(id)].localAnchorB; }
+
+DistanceLengths World::jointLengths(JointId id) const {
+    const Joint& joint = joints_.joints[indexOf(id)];
+    return {joint.restLength, joint.minLength, joint.maxLength};
+}
+
+void World::setJointLimits(JointId id, const std::optional<JointLimits>& limits) {
+    Joint& joint = joints_.joints[indexOf(id)];
+    validateJointLimits(joint.type, limits);
+    joint.limits = limits;
+    if (!limits) joint.impulses.lower = joint.impulses.upper = 0.0f;  // the rows are gone
+    wakeJointBodies(joint);
+}
+
+void World::setJointMotor(JointId id, const std::optional<JointMotor>& motor) {
+    Joint& joint = joints_.joints[indexOf(id)];
+    validateJointMotor(joint.type, motor);
+    joint.motor = motor;
+    if (!motor) joint.impulses.motor = 0.0f;
+    wakeJointBodies(joint);
+}
+
+void World::setJointSpring(JointId id, const std::optional<JointSpring>& spring) {
+    Joint& joint = joints_.joints[indexOf(id)];
+    validateJointSpring(joint.type, spring);
+    validateJointLengths(joint.type, joint.restLength, spring.has_value(), joint.minLengthSetting, joint.maxLengthSetting);
+    // With a spring or without, the axial row means another thing (a spring or a rigid rod).
+    if (spring.has_value() != joint.spring.has_value()) joint.impulses.axial = 0.0f;
+    joint.spring = spring;
+    applyDistanceLengths(joint);
+    wakeJointBodies(joint);
+}
+
+void World::setJointLengths(JointId id, std::optional<float> minLength, std::optional<float> maxLength) {
+    Joint& joint = joints_.joints[indexOf(id)];
+    validateJointLengths(joint.type, joint.restLength, joint.spring.has_value(), minLength, maxLength);
+    joint.minLengthSetting = minLength;
+    joint.maxLengthSetting = maxLength;
+    applyDistanceLengths(joint);
+    wakeJointBodies(joint);
+}
+
+void World::applyDistanceLengths(Joint& joint) {
+    if (joint.type != JointType::Distance) return;  // only a distance joint has lengths
+    const DistanceLengths lengths =
+        distanceLengths(joint.restLength, joint.spring.has_value(), joint.minLengthSetting, joint.maxLengthSetting);
+    joint.minLength = lengths.min;
+    joint.maxLength = lengths.max;
+    // A bound that is no longer solved must not warm-start (see the joint solver's distance rows).
+    const bool range = joint.minLength < joint.maxLength;
+    if (!range || !(joint.minLength > 0.0f)) joint.impulses.lower = 0.0f;
+    if (!range || !std::isfinite(joint.maxLength)) joint.impulses.upper = 0.0f;
+    if (range && !joint.spring) joint.impulses.axial = 0.0f;
+}
+
+void World::setJointCollideConnected(JointId id, bool collideConnected) {
+    Joint& joint = joints_.joints[indexOf(id)];
+    if (joint.collideConnected == collideConnected) return;
+    joint.collideConnected = collideConnected;
+    if (joint.bodyB.isValid()) {
+        if (collideConnected) unfilterJointPair(joint.bodyA, joint.bodyB);
+        else filterJointPair(joint.bodyA, joint.bodyB);
+    }
+    wakeJointBodies(joint);
+}
+
+void World::setJointName(JointId id, const std::string& name) { joints_.names[indexOf(id)] = name; }
+
+void World::wakeJointBodies(const Joint& joint) {
+    wakeIndex(indexOf(joint.bodyA));
+    if (joint.bodyB.isValid()) wakeIndex(indexOf(joint.bodyB));
+}
+
+// ---- Queries ---------------------------------------------------------------------------------------
+
+ContactInfo World::contact(std::size_t index) const {
+    const Contact& c = contactManager_.contacts().at(index);
+    ContactInfo info;
+    info.bodyA = bodies_.idAt(bodies_.denseIndexOfSlot(c.slotA));
+    info.bodyB = bodies_.idAt(bodies_.denseIndexOfSlot(c.slotB));
+    info.friction = c.friction;
+    info.restitution = c.restitution;
+    info.normal = c.manifold.normal;
+    info.pointCount = c.manifold.pointCount;
+    info.points = c.manifold.points;
+    for (int k = 0; k < kMaxManifoldPoints; ++k) info.normalImpulses[k] = c.impulses[k].normal;
+    info.frictionImpulse = c.frictionImpulse.linear;
+    return info;
 }
 
 double World::kineticEnergy() const {

@@ -34,6 +34,18 @@ struct WorldRayHit {
     Vec3 normal{0.0f};      // unit, outward from the body at the point
 };
 
+// A persistent contact as the engine's public API shows it (touching or speculative).
+struct ContactInfo {
+    BodyId bodyA, bodyB;
+    float friction = 0.0f;     // combined coefficient
+    float restitution = 0.0f;  // combined coefficient
+    Vec3 normal{0.0f};         // unit, world frame, from A towards B
+    int pointCount = 0;        // 0 while the bodies' fat boxes overlap but the shapes are apart
+    std::array<ContactPoint, kMaxManifoldPoints> points{};
+    std::array<float, kMaxManifoldPoints> normalImpulses{};  // N s, accumulated (warm start)
+    Vec3 frictionImpulse{0.0f};                              // N s, accumulated, in the contact plane
+};
+
 struct NonFiniteBody {
     BodyId id;
     std::string name;
@@ -68,6 +80,27 @@ public:
     BodyId jointBodyA(JointId id) const;
     BodyId jointBodyB(JointId id) const;  // invalid for a joint to the world
     const std::string& jointName(JointId id) const;
+    const std::optional<JointLimits>& jointLimits(JointId id) const;
+    const std::optional<JointMotor>& jointMotor(JointId id) const;
+    const std::optional<JointSpring>& jointSpring(JointId id) const;
+    DistanceLengths jointLengths(JointId id) const;  // a distance joint's rest length and limits in effect
+    bool jointCollidesConnected(JointId id) const;
+    // The joint's points in its bodies' frames (from each centre of mass; the world's: world frame).
+    Vec3 jointLocalAnchorA(JointId id) const;
+    Vec3 jointLocalAnchorB(JointId id) const;
+
+    // Live edits of a joint's parameters (as Box2D v3's b2RevoluteJoint_SetLimits...). Each
+    // validates like createJoint (the same messages and limits), keeps the rest pose taken at
+    // creation (limits still count from it, a distance joint's rest length stays), wakes both
+    // bodies, and keeps the accumulated impulses of the rows that remain.
+    void setJointLimits(JointId id, const std::optional<JointLimits>& limits);
+    void setJointMotor(JointId id, const std::optional<JointMotor>& motor);
+    void setJointSpring(JointId id, const std::optional<JointSpring>& spring);
+    // Unset: the rest length without a spring, unbounded with one (as in JointCreationSettings).
+    void setJointLengths(JointId id, std::optional<float> minLength, std::optional<float> maxLength);
+    void setJointCollideConnected(JointId id, bool collideConnected);
+    void setJointName(JointId id, const std::string& name);
+
     // How far the joint is from satisfied now: worst position (m) and angle (rad) error.
     JointError jointError(JointId id) const;
     // The largest position and the largest angle error over all joints (each its own maximum).
@@ -87,6 +120,29 @@ public:
     const Shape& shape(BodyId id) const;
     MotionType motionType(BodyId id) const;
     float mass(BodyId id) const;
+
+    float friction(BodyId id) const;
+    float restitution(BodyId id) const;
+    float rollingResistance(BodyId id) const;
+    bool ccdEnabled(BodyId id) const;
+    float density(BodyId id) const;       // kg/m^3; what the mass follows from unless it was given
+    Mat3 localInertia(BodyId id) const;   // kg m^2 about the centre of mass, body axes; zero unless dynamic
+
+    // Live edits of a body's properties (as Box2D v3's b2Body_SetType, b2Shape_SetFriction...).
+    // Each validates like createBody (std::invalid_argument naming the field; nothing changes on
+    // refusal), wakes the body and the bodies it touches, and keeps what the change allows: a
+    // material or mass change keeps the contacts and their accumulated impulses (warm starts);
+    // a motion type or shape change drops the body's contacts (they were made for the old kind of
+    // pair, or the old shape's features) and the broad phase finds them again in the next step.
+    void setMotionType(BodyId id, MotionType motion);
+    void setShape(BodyId id, const Shape& shape);  // the body's origin stays; its centre of mass follows the shape
+    void setMass(BodyId id, float mass);           // kg; the inertia scales with it
+    void setDensity(BodyId id, float density);     // kg/m^3: the mass follows from the shape's volume
+    void setFriction(BodyId id, float friction);
+    void setRestitution(BodyId id, float restitution);
+    void setRollingResistance(BodyId id, float coefficient);
+    void setCcd(BodyId id, bool ccd);
+    void setName(BodyId id, const std::string& name);  // does not wake
 
     // Edits wake the body.
     void setTransform(BodyId id, const Vec3& position, const Quat& orientation);
@@ -116,6 +172,11 @@ public:
     std::uint64_t stepCount() const { return stepCount_; }
     double simulatedTime() const { return simulatedTime_; }
 
+    // Persistent contacts in the engine's order; index < contactCount(). The order changes as
+    // contacts come and go.
+    std::size_t contactCount() const { return contactManager_.contacts().size(); }
+    ContactInfo contact(std::size_t index) const;
+
     // Direct read access to the arrays, for renderers and reports that visit every body.
     const BodyStorage& bodies() const { return bodies_; }
     // Persistent contacts (touching or speculative), for debug drawing and tests.
@@ -142,6 +203,16 @@ private:
     void buildIslandsAndWake();            // islands over contacts and joints; touched islands wake
     void clearAppliedForces();             // the step is over: added forces and torques are spent
     void wakeIndex(std::size_t i);
+    void wakeContactPartners(std::size_t i);  // the bodies body i touches
+    // After a change of what body i is (motion type, shape): its contacts go, and its proxy is
+    // made anew so the next broad phase pairs it as a new body.
+    void renewCollision(std::size_t i);
+    // Jointed bodies that do not collide: counted per pair, as several joints may filter one.
+    void filterJointPair(BodyId a, BodyId b);
+    void unfilterJointPair(BodyId a, BodyId b);
+    void wakeJointBodies(const Joint& joint);
+    // A distance joint's effective limits from its settings, with the impulses of dropped bounds cleared.
+    static void applyDistanceLengths(Joint& joint);
 
     WorldSettings settings_;
     BodyStorage bodies_;
