@@ -756,6 +756,7 @@ private slots:
     void duplicateNameOfAJointedBodyIsRefused();
     void simulatedPoseOutsideTheFileLimits();
     void simulatedPoseCarriesJoints();
+    void propertyEditMidRunKeepsTheBodyAndItsJoints();
     void runAtTheSpeedBoundIsReported();
     void oversizedFileIsRefusedUnread();
 };
@@ -896,16 +897,78 @@ void TestEditorSoak::simulatedPoseCarriesJoints() {
     QCOMPARE(world->stepCount(), steps);
 
     // Rebuilt from the document (Reset), the joint holds the bodies where the live one does.
-    const auto jointOf = [](const World& w, JointId id) { return w.joints().joints[static_cast<std::size_t>(w.joints().denseIndex(id))]; };
-    const simcore::Joint running = jointOf(*world, live);
+    const simcore::Vec3 runningA = world->jointLocalAnchorA(live), runningB = world->jointLocalAnchorB(live);
     session.simulation.reset();
-    const simcore::Joint rebuilt = jointOf(*session.simulation.world(), session.simulation.jointIds()[0]);
-    QVERIFY(glm::length(rebuilt.localAnchorA - running.localAnchorA) < 1e-5f);
-    QVERIFY(glm::length(rebuilt.localAnchorB - running.localAnchorB) < tolerance);
+    const World& rebuilt = *session.simulation.world();
+    const JointId rebuiltJoint = session.simulation.jointIds()[0];
+    QVERIFY(glm::length(rebuilt.jointLocalAnchorA(rebuiltJoint) - runningA) < 1e-5f);
+    QVERIFY(glm::length(rebuilt.jointLocalAnchorB(rebuiltJoint) - runningB) < tolerance);
 
     session.document.undoStack()->undo();
     QVERIFY(interplay::sameSceneJoint(session.document.joint(0), authored));
     QCOMPARE(session.document.undoStack()->undoText(), QString());
+    QVERIFY(session.editErrors.isEmpty());
+}
+
+// An Inspector edit of a property during a paused run reaches the live body through the engine's
+// setter: the body keeps its id, its joint and its contacts with their accumulated impulses, so the
+// run goes on from where it was (the stack does not jump). Undo goes back the same way.
+void TestEditorSoak::propertyEditMidRunKeepsTheBodyAndItsJoints() {
+    test_support::EditorSession session;
+    Scene scene;
+    SceneBody ground = interplay::templateBody(ShapeType::Box, QStringLiteral("Ground"), {0.0f, -0.5f, 0.0f});
+    ground.body.motion = MotionType::Static;
+    ground.body.shape = Shape::box(Vec3(10.0f, 0.5f, 10.0f));
+    scene.bodies.push_back(ground);
+    for (const float y : {0.5f, 1.5f})
+        scene.bodies.push_back(interplay::templateBody(ShapeType::Box, y < 1.0f ? QStringLiteral("Lower") : QStringLiteral("Upper"), {0.0f, y, 0.0f}));
+    scene.joints.push_back(interplay::templateJoint(JointType::Hinge, QStringLiteral("Hinge"), scene.bodies, 1, 2));
+    session.document.restoreRecovered(scene, QString());
+
+    session.simulation.stepFrames(90);  // settled on the ground
+    const World* world = session.simulation.world();
+    const std::vector<BodyId> bodies = session.simulation.bodyIds();
+    const JointId joint = session.simulation.jointIds()[0];
+    const std::uint64_t steps = world->stepCount();
+    std::vector<ContactInfo> contacts;
+    for (std::size_t c = 0; c < world->contactCount(); ++c) contacts.push_back(world->contact(c));
+    QVERIFY(!contacts.empty());
+    const Vec3 lower = world->position(bodies[1]);
+
+    SceneBody slippery = session.document.body(1);
+    slippery.body.friction = 0.05f;
+    session.document.undoStack()->push(
+        new interplay::ChangeBodies(&session.document, "Friction", BodyField::Friction, {1}, {slippery}));
+    QCOMPARE(session.simulation.world(), world);  // not rebuilt
+    QCOMPARE(world->stepCount(), steps);
+    QCOMPARE(session.simulation.bodyIds(), bodies);
+    QCOMPARE(session.simulation.jointIds()[0], joint);
+    QVERIFY(world->contains(joint));
+    QCOMPARE(world->friction(bodies[1]), 0.05f);
+    QCOMPARE(world->contactCount(), contacts.size());
+    for (std::size_t c = 0; c < contacts.size(); ++c) {
+        const ContactInfo now = world->contact(c);
+        QVERIFY(now.bodyA == contacts[c].bodyA && now.bodyB == contacts[c].bodyB);
+        QCOMPARE(now.pointCount, contacts[c].pointCount);
+        for (int k = 0; k < now.pointCount; ++k) QCOMPARE(now.normalImpulses[k], contacts[c].normalImpulses[k]);
+    }
+    session.simulation.stepFrames(1);
+    QVERIFY2(glm::length(world->position(bodies[1]) - lower) < 1e-4f, "the stack jumped");
+
+    // A joint edit goes through the joint's setter: the same joint, its rest pose kept.
+    SceneJoint limited = session.document.joint(0);
+    limited.joint.limits = JointLimits{-0.1f, 0.1f};
+    session.document.undoStack()->push(
+        new interplay::ChangeJoints(&session.document, "Limits", JointField::Limits, {0}, {limited}));
+    QCOMPARE(session.simulation.jointIds()[0], joint);
+    QCOMPARE(world->jointLimits(joint)->upper, 0.1f);
+    QVERIFY(world->jointError(joint).angle < 1e-3f);
+
+    session.document.undoStack()->undo();
+    session.document.undoStack()->undo();
+    QVERIFY(!world->jointLimits(joint));
+    QCOMPARE(world->friction(bodies[1]), scene.bodies[1].body.friction);
+    QCOMPARE(session.simulation.bodyIds(), bodies);
     QVERIFY(session.editErrors.isEmpty());
 }
 

@@ -76,9 +76,11 @@ bool SimulationController::build(simcore::Scene scene, QString* error) {
 }
 
 void SimulationController::editedInPlace() {
-    // Edits in place leave the world as the edits made it: bodies in another order, a broad-phase
-    // tree of another shape. Once it has run nothing is lost by keeping it; before, a fresh build
-    // makes the run the same as the saved scene's.
+    // Adding, removing, reordering or re-creating bodies and joints, or moving bodies, leaves the
+    // world as the edits made it: bodies and joints in another order, fat boxes of other sizes.
+    // (Property setters do not: they leave what a build with the new value makes.) Once it has run
+    // nothing is lost by keeping it; before, a fresh build makes the run the same as the saved
+    // scene's.
     if (m_built->world.stepCount() == 0 && m_bodyIds.size() == m_scene.bodies.size()) m_rebuildBeforeRun = true;
 }
 
@@ -139,58 +141,59 @@ bool SimulationController::changeBody(int index, const simcore::SceneBody& body,
         emit bodiesEdited();
         return true;
     }
+    bool moved = false;  // a pose or velocity edit, rather than one of what the body is
     try {
         if (!world.contains(id)) throw std::invalid_argument("the body is not in the running world");
         const simcore::BodyCreationSettings& b = body.body;
         switch (field) {
         case BodyField::Position:
             world.setTransform(id, world.position(id) + (b.position - before.body.position), world.orientation(id));
+            moved = true;
             break;
         case BodyField::Orientation:
             world.setTransform(id, world.position(id),
                                b.orientation * glm::inverse(before.body.orientation) * world.orientation(id));
+            moved = true;
             break;
         case BodyField::Pose:
             world.setTransform(id, b.position, b.orientation);
             world.setLinearVelocity(id, b.linearVelocity);
             world.setAngularVelocity(id, b.angularVelocity);
+            moved = true;
             break;
-        case BodyField::LinearVelocity: world.setLinearVelocity(id, b.linearVelocity); break;
-        case BodyField::AngularVelocity: world.setAngularVelocity(id, b.angularVelocity); break;
-        default:
-            recreateBody(index);
-            editedInPlace();
-            emit bodiesEdited();
-            return true;
+        case BodyField::LinearVelocity:
+            world.setLinearVelocity(id, b.linearVelocity);
+            moved = true;
+            break;
+        case BodyField::AngularVelocity:
+            world.setAngularVelocity(id, b.angularVelocity);
+            moved = true;
+            break;
+        case BodyField::Name: world.setName(id, b.name); break;
+        case BodyField::Shape: world.setShape(id, b.shape); break;
+        case BodyField::Motion: world.setMotionType(id, b.motion); break;
+        case BodyField::Mass: b.mass ? world.setMass(id, *b.mass) : world.setDensity(id, b.density); break;
+        case BodyField::Friction: world.setFriction(id, b.friction); break;
+        case BodyField::Restitution: world.setRestitution(id, b.restitution); break;
+        case BodyField::RollingResistance: world.setRollingResistance(id, b.rollingResistance); break;
+        case BodyField::Ccd: world.setCcd(id, b.ccd); break;
+        case BodyField::Color: break;  // handled above: nothing of the world changes
         }
     } catch (const std::exception& e) {
         if (error) *error = QString::fromStdString(e.what());
         return false;
     }
-    editedInPlace();
-    emit posesEdited();
+    if (moved) {
+        // A body moved in place keeps the fat box it had where the move ends inside it; a fresh
+        // build fits one to the new pose, and a run from it meets its pairs at other steps.
+        editedInPlace();
+        emit posesEdited();
+    } else {
+        // The setters leave the world as a build with the new value would make it, and keep the
+        // body's id, joints and warm starts. Views redraw the body (its shape or kind may differ).
+        emit bodiesEdited();
+    }
     return true;
-}
-
-void SimulationController::recreateBody(int index) {
-    simcore::World& world = m_built->world;
-    const auto i = static_cast<std::size_t>(index);
-    const simcore::BodyId old = m_bodyIds[i];
-    simcore::BodyCreationSettings settings = m_scene.bodies[i].body;
-    settings.position = world.position(old);
-    settings.orientation = world.orientation(old);
-    if (settings.motion != simcore::MotionType::Static) {
-        settings.linearVelocity = world.linearVelocity(old);
-        settings.angularVelocity = world.angularVelocity(old);
-    }
-    const simcore::BodyId id = world.createBody(settings);  // throws before anything changed
-    world.destroyBody(old);                                 // and its joints
-    m_bodyIds[i] = id;
-    if (m_grab && m_grab->body == old) m_grab->body = id;
-    for (std::size_t j = 0; j < m_scene.joints.size(); ++j) {
-        const simcore::SceneJoint& joint = m_scene.joints[j];
-        if (joint.bodyA == i || joint.bodyB == i) m_jointIds[j] = createLiveJoint(joint);
-    }
 }
 
 simcore::Vec3 SimulationController::livePoint(std::size_t sceneBody, const simcore::Vec3& point) const {
@@ -249,19 +252,37 @@ bool SimulationController::changeJoint(int index, const simcore::SceneJoint& joi
     const auto i = static_cast<std::size_t>(index);
     m_scene.joints.at(i) = joint;
     if (field == JointField::Placement) return true;
-    // simcore cannot retune a joint: the old one goes, a new one is made at the bodies' live poses.
-    if (m_built->world.contains(m_jointIds[i])) m_built->world.destroyJoint(m_jointIds[i]);
-    m_jointIds[i] = {};
-    bool created = true;
+    simcore::World& world = m_built->world;
+    const simcore::JointCreationSettings& j = joint.joint;
     try {
-        m_jointIds[i] = createLiveJoint(joint);
+        if (!world.contains(m_jointIds[i])) throw std::invalid_argument("the joint is not in the running world");
+        const simcore::JointId id = m_jointIds[i];
+        switch (field) {
+        case JointField::Name: world.setJointName(id, j.name); break;
+        case JointField::Limits: world.setJointLimits(id, j.limits); break;
+        case JointField::Motor: world.setJointMotor(id, j.motor); break;
+        case JointField::Lengths: world.setJointLengths(id, j.minLength, j.maxLength); break;
+        case JointField::Spring: world.setJointSpring(id, j.spring); break;
+        case JointField::CollideConnected: world.setJointCollideConnected(id, j.collideConnected); break;
+        case JointField::Anchor:
+        case JointField::AnchorB:
+        case JointField::Axis:
+            // Moved anchors or a turned axis define another joint: it is made anew at the bodies'
+            // live poses, which become its rest pose. It joins the end of the world's joints, so a
+            // world that has not run is rebuilt to solve them in the scene's order.
+            world.destroyJoint(id);
+            m_jointIds[i] = {};
+            m_jointIds[i] = createLiveJoint(joint);
+            editedInPlace();
+            break;
+        case JointField::Placement: break;  // handled above
+        }
     } catch (const std::exception& e) {
         if (error) *error = QString::fromStdString(e.what());
-        created = false;
+        return false;
     }
-    editedInPlace();
     emit bodiesEdited();
-    return created;
+    return true;
 }
 
 bool SimulationController::applySettings(const simcore::WorldSettings& settings, QString* error) {

@@ -12,16 +12,17 @@
 //     (a body dragged where the run left it follows the cursor); Apply Simulated Pose and
 //     velocity edits set the live values; a colour is only drawn differently;
 //   - any other change of a body (shape, mass, motion, friction, restitution, rolling resistance,
-//     CCD, name) re-creates it in its live pose and velocity, since simcore has no setters for
-//     them; its joints are re-created with it and its contacts start afresh (no warm start for
-//     one step);
-//   - a joint added or changed is created at its bodies' live poses: its anchors and axis follow
-//     body A (a distance joint's second point follows body B), and the bodies' current relative
-//     pose becomes its rest pose (zero hinge angle, zero slide) until Reset, which restores the
-//     authored one. simcore takes a joint's rest pose from its bodies at creation and cannot
-//     retune a joint in place.
-// A world that has not run since it was built is rebuilt from the authored scene before its first
-// step, so a run from an edited scene is bit for bit the run of that scene saved and reopened.
+//     CCD, name) goes through simcore's setter: the body keeps its id, pose, velocities and
+//     joints, and its contacts keep their warm starts (a shape or motion change finds them anew);
+//   - a joint's limits, motor, spring, lengths, collide-connected flag and name go through
+//     simcore's joint setters, which keep the rest pose it was built with;
+//   - a joint added, or given new anchors or axis, is created at its bodies' live poses: its
+//     anchors and axis follow body A (a distance joint's second point follows body B), and the
+//     bodies' current relative pose becomes its rest pose until Reset restores the authored one.
+// A world that has not run since bodies or joints were added, removed, reordered, re-created or
+// moved is rebuilt from the authored scene before its first step (the order of bodies and joints
+// and the broad phase's fat boxes would differ from a fresh build's), so a run from an edited
+// scene is bit for bit the run of that scene saved and reopened.
 
 #include "app/document/scene_document.h"
 
@@ -151,7 +152,7 @@ public slots:
 signals:
     void stepped();                     // the world advanced; views redraw
     void worldRebuilt();                // a new world replaced the old one; cached per-body data is stale
-    void bodiesEdited();                // an edit added, removed, re-created, reordered or recoloured bodies
+    void bodiesEdited();                // an edit added, removed, reordered, recoloured or changed bodies
                                         // or joints of the running world: cached per-body data is stale
     void posesEdited();                 // an edit moved bodies or set their velocities: views redraw
     void bodySpawned(simcore::BodyId id);  // a body joined the running world
@@ -184,8 +185,6 @@ private:
     // from its authored pose to its live one.
     simcore::Vec3 livePoint(std::size_t sceneBody, const simcore::Vec3& point) const;
     simcore::Vec3 liveDirection(std::size_t sceneBody, const simcore::Vec3& direction) const;
-    // Replaces scene body `index` by a new world body with the authored settings and the live state.
-    void recreateBody(int index);
 
     simcore::Scene m_scene;
     std::unique_ptr<simcore::BuiltWorld> m_built;
