@@ -103,10 +103,9 @@ void checkStep(std::string_view text) {
         }
         // What the runner would print with exit 0 must be finite: every body's origin (computed
         // from the centre of mass the check above covers), orientation and velocities.
-        const simcore::BodyStorage& b = world.bodies();
-        for (std::size_t i = 0; i < b.size(); ++i)
-            if (!finite(b.origin(i)))
-                fail("body '" + b.name[i] + "' has a non-finite origin at step " + std::to_string(step) +
+        for (const simcore::BodyId id : world.bodyIds())
+            if (!finite(world.position(id)))
+                fail("body '" + world.name(id) + "' has a non-finite origin at step " + std::to_string(step) +
                      " that findNonFiniteBody does not report");
     }
     const double kinetic = world.kineticEnergy(), potential = world.potentialEnergy();

@@ -836,13 +836,14 @@ void TestContacts::contactCapLimitsPairsBetweenDynamicBodiesOnly() {
 
     std::map<std::uint32_t, int> withCubes;
     int withGround = 0;
-    for (const Contact& contact : world.contacts()) {
-        if (contact.slotA == ground.index || contact.slotB == ground.index) {
+    for (std::size_t c = 0; c < world.contactCount(); ++c) {
+        const ContactInfo contact = world.contact(c);
+        if (contact.bodyA == ground || contact.bodyB == ground) {
             ++withGround;
             continue;
         }
-        ++withCubes[contact.slotA];
-        ++withCubes[contact.slotB];
+        ++withCubes[contact.bodyA.index];
+        ++withCubes[contact.bodyB.index];
     }
     QCOMPARE(withGround, kCubes);
     for (const auto& [slot, count] : withCubes) QVERIFY2(count <= 3, qPrintable(QString("cube %1 has %2").arg(slot).arg(count)));
@@ -916,11 +917,10 @@ void TestContacts::longMixedRunStaysFiniteAndDoesNotGainEnergy() {
             worstEnergy = e;
             worstEnergyStep = step;
         }
-        const BodyStorage& bodies = world.bodies();
-        for (std::size_t i = 0; i < bodies.size(); ++i) {
-            if (bodies.motion[i] == MotionType::Dynamic && bodies.centerOfMass[i].y < lowest) {
-                lowest = bodies.centerOfMass[i].y;
-                lowestName = bodies.name[i];
+        for (const BodyId id : world.bodyIds()) {
+            if (world.motionType(id) == MotionType::Dynamic && world.centerOfMass(id).y < lowest) {
+                lowest = world.centerOfMass(id).y;
+                lowestName = world.name(id);
             }
         }
     }

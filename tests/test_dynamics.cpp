@@ -186,7 +186,7 @@ void TestDynamics::appliedForceActsOverTheWholeStep() {
     body.shape = Shape::sphere(0.5f);
     body.mass = 1.0f;
     const BodyId id = world.createBody(body);
-    const float inertia = world.bodies().inertiaLocal[0][0][0];
+    const float inertia = world.localInertia(id)[0][0];
     const Vec3 force(3.0f, -1.5f, 0.5f);  // N
     const Vec3 torque(0.0f, 0.02f, 0.0f);  // N m
 

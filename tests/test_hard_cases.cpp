@@ -33,14 +33,15 @@ Drift runSceneFile(const char* file, float seconds) {
     if (!loaded.ok()) qFatal("cannot load %s", file);
     BuiltWorld built = buildWorld(*loaded.scene);
     World& world = built.world;
-    const BodyStorage& bodies = world.bodies();
-    const std::vector<Vec3> start(bodies.centerOfMass.begin(), bodies.centerOfMass.end());
+    const std::vector<BodyId> ids = world.bodyIds();
+    std::vector<Vec3> start;
+    for (const BodyId id : ids) start.push_back(world.centerOfMass(id));
     Drift drift;
     for (int i = 0, n = stepsFor(world, seconds); i < n; ++i) {
         world.step();
-        for (std::size_t b = 0; b < bodies.size(); ++b) {
-            const float d = glm::length(bodies.centerOfMass[b] - start[b]);
-            if (d > drift.worst) drift = {d, bodies.name[b]};
+        for (std::size_t b = 0; b < ids.size(); ++b) {
+            const float d = glm::length(world.centerOfMass(ids[b]) - start[b]);
+            if (d > drift.worst) drift = {d, world.name(ids[b])};
         }
     }
     return drift;
@@ -215,7 +216,7 @@ void TestHardCases::intermediateAxisFlipsWithBoundedMomentum() {
     b.mass = 1.0f;
     b.angularVelocity = Vec3(0.05f, 5.0f, 0.0f);
     const BodyId box = world.createBody(b);
-    const Mat3 inertia = world.bodies().inertiaLocal[0];
+    const Mat3 inertia = world.localInertia(box);
     const std::vector<double> expected =
         referenceFlipTimes(Vec3(inertia[0][0], inertia[1][1], inertia[2][2]), b.angularVelocity, 10.0);
     QVERIFY(expected.size() >= 3);
@@ -306,8 +307,10 @@ void TestHardCases::coincidentBodiesSeparateAtBoundedSpeed() {
         for (BodyId id : cubes) fastest = std::max(fastest, glm::length(world.linearVelocity(id)));
     }
     float deepest = 0.0f;
-    for (const Contact& contact : world.contacts())
-        for (int k = 0; k < contact.manifold.pointCount; ++k) deepest = std::max(deepest, -contact.manifold.points[k].separation);
+    for (std::size_t c = 0; c < world.contactCount(); ++c) {
+        const ContactInfo contact = world.contact(c);
+        for (int k = 0; k < contact.pointCount; ++k) deepest = std::max(deepest, -contact.points[k].separation);
+    }
     const float bound = 0.5f * static_cast<float>(kCount - 1) * world.settings().solver.maxPushVelocity;
     qInfo("coincident cubes: fastest %.3f m/s (bound %.1f), deepest overlap after 5 s %.4f m", fastest, bound, deepest);
     QVERIFY2(fastest < bound, qPrintable(QString("a cube reached %1 m/s").arg(fastest)));

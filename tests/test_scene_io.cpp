@@ -258,7 +258,7 @@ private slots:
         QCOMPARE(loaded.scene->bodies[0].body.rollingResistance, 0.05f);
         // And the world takes it: a rolling ball's lever is C r.
         BuiltWorld built = buildWorld(*loaded.scene);
-        QCOMPARE(built.world.bodies().rollingResistance[0], 0.05f);
+        QCOMPARE(built.world.rollingResistance(built.bodyIds[0]), 0.05f);
     }
 
     void keyOrderIsStable() {

@@ -35,12 +35,12 @@ public:
     bool isOpen() const { return file_ != nullptr; }
 
     void write(const simcore::World& world) {
-        const simcore::BodyStorage& b = world.bodies();
-        for (std::size_t i = 0; i < b.size(); ++i) {
-            const simcore::Vec3 p = b.origin(i);
-            const simcore::Quat& q = b.orientation[i];
-            const simcore::Vec3& v = b.linearVelocity[i];
-            const simcore::Vec3& w = b.angularVelocity[i];
+        const std::vector<simcore::BodyId> ids = world.bodyIds();
+        for (std::size_t i = 0; i < ids.size(); ++i) {
+            const simcore::Vec3 p = world.position(ids[i]);
+            const simcore::Quat q = world.orientation(ids[i]);
+            const simcore::Vec3 v = world.linearVelocity(ids[i]);
+            const simcore::Vec3 w = world.angularVelocity(ids[i]);
             std::fprintf(file_, "%llu,%.9g,%zu,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n",
                          static_cast<unsigned long long>(world.stepCount()), world.simulatedTime(), i,
                          p.x, p.y, p.z, q.w, q.x, q.y, q.z, v.x, v.y, v.z, w.x, w.y, w.z);

@@ -58,14 +58,13 @@ nlohmann::ordered_json makeReport(const simcore::World& world, const RunSummary&
                                           {"angle", summary.maxJointError.angle}};
 
     nlohmann::ordered_json bodies = nlohmann::ordered_json::array();
-    const BodyStorage& b = world.bodies();
-    for (std::size_t i = 0; i < b.size(); ++i) {
-        bodies.push_back({{"name", b.name[i]},
-                          {"position", toJson(b.origin(i))},
-                          {"orientation", toJson(b.orientation[i])},
-                          {"linearVelocity", toJson(b.linearVelocity[i])},
-                          {"angularVelocity", toJson(b.angularVelocity[i])},
-                          {"awake", b.awake[i] != 0}});
+    for (const BodyId id : world.bodyIds()) {
+        bodies.push_back({{"name", world.name(id)},
+                          {"position", toJson(world.position(id))},
+                          {"orientation", toJson(world.orientation(id))},
+                          {"linearVelocity", toJson(world.linearVelocity(id))},
+                          {"angularVelocity", toJson(world.angularVelocity(id))},
+                          {"awake", world.isAwake(id)}});
     }
     report["bodies"] = bodies;
     return report;

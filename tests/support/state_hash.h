@@ -21,10 +21,10 @@ struct BodyState {
 };
 
 inline std::vector<BodyState> bodyStates(const simcore::World& world) {
-    const simcore::BodyStorage& b = world.bodies();
-    std::vector<BodyState> states(b.size());
-    for (std::size_t i = 0; i < b.size(); ++i) {
-        states[i] = {b.origin(i), b.orientation[i], b.linearVelocity[i], b.angularVelocity[i], b.awake[i] != 0};
+    std::vector<BodyState> states;
+    for (const simcore::BodyId id : world.bodyIds()) {
+        states.push_back({world.position(id), world.orientation(id), world.linearVelocity(id),
+                          world.angularVelocity(id), world.isAwake(id)});
     }
     return states;
 }
