@@ -543,6 +543,8 @@ void TestWorldSetters::badValuesAreRefusedAndChangeNothing_data() {
     // A spring removed with a minimum that only a spring allows: unset, the rod's maximum is its
     // rest length (1 m), below the minimum.
     QTest::newRow("spring off, min above rest") << 17 << "minLength must not exceed maxLength";
+    // Finite, but its moments on the 100 m ground overflow: refused rather than a NaN inverse.
+    QTest::newRow("mass overflowing the inertia") << 18 << "non-finite inertia";
 }
 
 void TestWorldSetters::badValuesAreRefusedAndChangeNothing() {
@@ -579,6 +581,7 @@ void TestWorldSetters::badValuesAreRefusedAndChangeNothing() {
         [&] { w.setJointLengths(joint[Rope], 0.5f, -1.0f); },
         [&] { w.setJointLengths(joint[Slider], 0.5f, 1.0f); },
         [&] { w.setJointSpring(joint[Rope], std::nullopt); },
+        [&] { w.setMass(id[Ground], 3e38f); },  // refused though static: it would be unusable once dynamic
     };
     const std::string message = refusal(calls[which]);
     QVERIFY2(!message.empty(), "the bad value was accepted");

@@ -76,6 +76,9 @@ MassProperties bodyMassProperties(const Shape& shape, MotionType motion, std::op
     }
     const MassProperties result = mass ? massPropertiesForMass(shape, *mass) : massProperties(shape, density);
     require(isPositiveFinite(result.mass), "the shape's mass is not a positive finite number");
+    // A huge mass on a large shape overflows the moments to infinity, whose inverse is NaN.
+    for (int c = 0; c < 3; ++c)
+        require(isFinite(result.inertia[c]), "mass and shape give a non-finite inertia (a smaller mass or density)");
     return result;
 }
 
@@ -705,6 +708,8 @@ void World::setShape(BodyId id, const Shape& shape) {
 void World::setMass(BodyId id, float mass) {
     const std::size_t i = indexOf(id);
     validateMass(mass);
+    // Checked as for a dynamic body whatever the motion, so a static body keeps only a mass it can use.
+    bodyMassProperties(bodies_.shape[i], MotionType::Dynamic, mass, bodies_.density[i]);
     const MassProperties properties = bodyMassProperties(bodies_.shape[i], bodies_.motion[i], mass, bodies_.density[i]);
     bodies_.massSetting[i] = mass;
     bodies_.setMassProperties(i, properties);
@@ -716,6 +721,7 @@ void World::setMass(BodyId id, float mass) {
 void World::setDensity(BodyId id, float density) {
     const std::size_t i = indexOf(id);
     validateDensity(density);
+    bodyMassProperties(bodies_.shape[i], MotionType::Dynamic, std::nullopt, density);  // as in setMass
     const MassProperties properties =
         bodyMassProperties(bodies_.shape[i], bodies_.motion[i], std::nullopt, density);
     bodies_.massSetting[i].reset();
