@@ -141,33 +141,34 @@ bool SimulationController::changeBody(int index, const simcore::SceneBody& body,
         emit bodiesEdited();
         return true;
     }
-    bool moved = false;  // a pose or velocity edit, rather than one of what the body is
+    bool posed = false;   // a pose or velocity edit, rather than one of what the body is
+    bool moved = false;   // a pose edit: the body was moved in place
     try {
         if (!world.contains(id)) throw std::invalid_argument("the body is not in the running world");
         const simcore::BodyCreationSettings& b = body.body;
         switch (field) {
         case BodyField::Position:
             world.setTransform(id, world.position(id) + (b.position - before.body.position), world.orientation(id));
-            moved = true;
+            posed = moved = true;
             break;
         case BodyField::Orientation:
             world.setTransform(id, world.position(id),
                                b.orientation * glm::inverse(before.body.orientation) * world.orientation(id));
-            moved = true;
+            posed = moved = true;
             break;
         case BodyField::Pose:
             world.setTransform(id, b.position, b.orientation);
             world.setLinearVelocity(id, b.linearVelocity);
             world.setAngularVelocity(id, b.angularVelocity);
-            moved = true;
+            posed = moved = true;
             break;
         case BodyField::LinearVelocity:
             world.setLinearVelocity(id, b.linearVelocity);
-            moved = true;
+            posed = true;
             break;
         case BodyField::AngularVelocity:
             world.setAngularVelocity(id, b.angularVelocity);
-            moved = true;
+            posed = true;
             break;
         case BodyField::Name: world.setName(id, b.name); break;
         case BodyField::Shape: world.setShape(id, b.shape); break;
@@ -183,16 +184,14 @@ bool SimulationController::changeBody(int index, const simcore::SceneBody& body,
         if (error) *error = QString::fromStdString(e.what());
         return false;
     }
-    if (moved) {
-        // A body moved in place keeps the fat box it had where the move ends inside it; a fresh
-        // build fits one to the new pose, and a run from it meets its pairs at other steps.
-        editedInPlace();
-        emit posesEdited();
-    } else {
-        // The setters leave the world as a build with the new value would make it, and keep the
-        // body's id, joints and warm starts. Views redraw the body (its shape or kind may differ).
-        emit bodiesEdited();
-    }
+    // A body moved in place keeps the fat box it had where the move ends inside it; a fresh build
+    // fits one to the new pose, and a run from it meets its pairs at other steps. The other
+    // setters leave the world as a build with the new value would make it.
+    if (moved) editedInPlace();
+    // A property edit keeps the body's id, joints and warm starts; views redraw the body (its
+    // shape or kind may differ).
+    if (posed) emit posesEdited();
+    else emit bodiesEdited();
     return true;
 }
 
