@@ -518,6 +518,10 @@ void TestWorldSetters::nameAndGettersReadBack() {
     QCOMPARE(b.world->jointSpring(b.joints[Rope])->hertz, 2.0f);
     QCOMPARE(b.world->jointLengths(b.joints[Rope]).min, 0.5f);
     QCOMPARE(b.world->jointLengths(b.joints[Rope]).max, 1.5f);
+    // A stale id is refused as every other call refuses it.
+    b.world->destroyBody(b.bodies[Weight]);  // and its rope
+    QVERIFY_THROWS_EXCEPTION(std::out_of_range, b.world->setFriction(b.bodies[Weight], 0.1f));
+    QVERIFY_THROWS_EXCEPTION(std::out_of_range, b.world->setJointSpring(b.joints[Rope], std::nullopt));
 }
 
 void TestWorldSetters::badValuesAreRefusedAndChangeNothing_data() {
