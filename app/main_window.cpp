@@ -1,6 +1,7 @@
 #include "app/main_window.h"
 
 #include "app/document/body_templates.h"
+#include "app/document/document_manager.h"
 #include "app/document/scene_document.h"
 #include "app/document/scene_tree_model.h"
 #include "app/document/undo_commands.h"
@@ -12,29 +13,23 @@
 #include "app/viewport/debug_draw_options.h"
 #include "app/viewport/viewport.h"
 
-#include "simcore/io/scene_io.h"
 #include "simcore/world/world.h"
 
 #include <QAction>
 #include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
-#include <QCoreApplication>
-#include <QDateTime>
 #include <QDir>
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
-#include <QFileSystemWatcher>
 #include <QHeaderView>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
 #include <QRegularExpression>
-#include <QSaveFile>
 #include <QSettings>
-#include <QStandardPaths>
 #include <QStatusBar>
 #include <QStyle>
 #include <QTimer>
@@ -47,13 +42,10 @@
 #include <algorithm>
 #include <optional>
 
-
 namespace interplay {
 namespace {
 
-constexpr int kDefaultAutosaveMs = 60'000;
 constexpr float kThrowSpeed = 14.0f;  // m/s along the view
-const QString kRecentFilesKey = QStringLiteral("recentFiles");
 const QString kGeometryKey = QStringLiteral("mainWindow/geometry");
 const QString kStateKey = QStringLiteral("mainWindow/state");
 const QString kSceneFilter = QStringLiteral("Scenes (*.json);;All files (*)");
@@ -69,26 +61,16 @@ constexpr JointAction kJointActions[] = {
     {simcore::JointType::Distance, "addDistanceJoint"},
 };
 
-// Size and modification time: what tells our own write apart from another program's.
-QString fileStamp(const QString& path) {
-    const QFileInfo info(path);
-    if (!info.exists()) return {};
-    return QStringLiteral("%1@%2").arg(info.size()).arg(info.lastModified().toMSecsSinceEpoch());
-}
-
-QString recoveryMetaPath() {
-    return MainWindow::recoveryFilePath() + QStringLiteral(".origin");
-}
-
-MainWindow::Prompts dialogPrompts(QWidget* parent) {
-    MainWindow::Prompts prompts;
+// The manager's questions as the dialogs a desktop user expects.
+DocumentManager::Prompts dialogPrompts(QWidget* parent) {
+    DocumentManager::Prompts prompts;
     prompts.unsavedChanges = [parent](const QString& name) {
         const auto answer = QMessageBox::warning(
             parent, QCoreApplication::applicationName(), MainWindow::tr("Save changes to \"%1\"?").arg(name),
             QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
-        if (answer == QMessageBox::Save) return MainWindow::UnsavedChoice::Save;
-        if (answer == QMessageBox::Discard) return MainWindow::UnsavedChoice::Discard;
-        return MainWindow::UnsavedChoice::Cancel;
+        if (answer == QMessageBox::Save) return DocumentManager::UnsavedChoice::Save;
+        if (answer == QMessageBox::Discard) return DocumentManager::UnsavedChoice::Discard;
+        return DocumentManager::UnsavedChoice::Cancel;
     };
     prompts.confirm = [parent](const QString& title, const QString& question) {
         return QMessageBox::question(parent, title, question, QMessageBox::Yes | QMessageBox::No, QMessageBox::Yes) ==
@@ -100,8 +82,8 @@ MainWindow::Prompts dialogPrompts(QWidget* parent) {
         box.setInformativeText(details);
         box.exec();
     };
-    prompts.chooseFile = [parent](MainWindow::FileChoice choice, const QString& title, const QString& directory) {
-        return choice == MainWindow::FileChoice::Open
+    prompts.chooseFile = [parent](DocumentManager::FileChoice choice, const QString& title, const QString& directory) {
+        return choice == DocumentManager::FileChoice::Open
                    ? QFileDialog::getOpenFileName(parent, title, directory, kSceneFilter)
                    : QFileDialog::getSaveFileName(parent, title, directory, kSceneFilter);
     };
@@ -113,14 +95,13 @@ MainWindow::Prompts dialogPrompts(QWidget* parent) {
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent),
       m_document(new SceneDocument(this)),
+      m_files(new DocumentManager(m_document, this)),
       m_simulation(new SimulationController(this)),
       m_viewport(new Viewport(this)),
       m_debugDraw(new DebugDrawOptions(this)),
       m_settingsModel(new SimulationSettingsModel(m_document, this)),
-      m_sceneTreeModel(new SceneTreeModel(m_document, this)),
-      m_prompts(dialogPrompts(this)),
-      m_autosaveTimer(new QTimer(this)),
-      m_watcher(new QFileSystemWatcher(this)) {
+      m_sceneTreeModel(new SceneTreeModel(m_document, this)) {
+    m_files->prompts() = dialogPrompts(this);
     setCentralWidget(m_viewport);
     m_viewport->setSimulation(m_simulation);
     m_viewport->setDocument(m_document);
@@ -136,8 +117,7 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_document, &SceneDocument::sceneReplaced, this, &MainWindow::documentSceneReplaced);
     connect(m_document, &SceneDocument::modifiedChanged, this, &MainWindow::updateTitle);
     connect(m_document, &SceneDocument::filePathChanged, this, &MainWindow::updateTitle);
-    connect(m_document, &SceneDocument::filePathChanged, this, &MainWindow::watchDocumentFile);
-    connect(m_document, &SceneDocument::saved, this, &MainWindow::watchDocumentFile);
+    connect(m_files, &DocumentManager::recentFilesChanged, this, &MainWindow::rebuildRecentMenu);
     // Each change of the document reaches the running world as it happens, in place: a run paused
     // mid-way keeps its state, and a drag moves one body instead of rebuilding the world.
     m_simulation->followDocument(m_document);
@@ -149,6 +129,7 @@ MainWindow::MainWindow(QWidget* parent)
             [this](const QString& message) { statusBar()->showMessage(message, 8000); });
     connect(m_inspector, &InspectorPanel::rejected, this,
             [this](const QString& message) { statusBar()->showMessage(message, 8000); });
+    connect(m_files, &DocumentManager::statusMessage, statusBar(), &QStatusBar::showMessage);
 
     connect(m_simulation, &SimulationController::stepped, this, &MainWindow::updateStatus);
     connect(m_simulation, &SimulationController::worldRebuilt, this, &MainWindow::updateStatus);
@@ -156,10 +137,6 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_simulation, &SimulationController::simulationError, this, &MainWindow::showSimulationError);
     connect(m_simulation, &SimulationController::simulationWarning, this,
             [this](const QString& message) { statusBar()->showMessage(message, 15000); });
-    connect(m_watcher, &QFileSystemWatcher::fileChanged, this, &MainWindow::documentFileChanged);
-
-    connect(m_autosaveTimer, &QTimer::timeout, this, &MainWindow::autosaveNow);
-    m_autosaveTimer->start(kDefaultAutosaveMs);
 
     resize(1440, 900);
     restoreLayout();
@@ -169,9 +146,9 @@ MainWindow::MainWindow(QWidget* parent)
 }
 
 MainWindow::~MainWindow() {
-    // The document is a child, destroyed after this destructor: nothing it emits on the way may
-    // reach a half-destroyed window.
-    m_document->disconnect(this);
+    // The document is a child, destroyed after this destructor with its siblings: nothing it emits
+    // on the way may reach the window or a listener half destroyed.
+    m_document->disconnect();
     // The QML panel goes first: its bindings read the settings model and the controller, which
     // are children of this window and would otherwise be destroyed under it.
     delete m_settingsPanel;
@@ -192,29 +169,29 @@ QAction* MainWindow::action(const QString& objectName) const {
     return findChild<QAction*>(objectName);
 }
 
+void MainWindow::openDefaultScene() {
+    m_document->newDefault();
+}
+
 void MainWindow::createActions() {
     QStyle* s = style();
     // File.
     QAction* a = makeAction(QStringLiteral("new"), tr("&New"), QKeySequence::New, tr("Start an empty scene"));
     a->setIcon(QIcon::fromTheme(QStringLiteral("document-new"), s->standardIcon(QStyle::SP_FileIcon)));
-    connect(a, &QAction::triggered, this, &MainWindow::newScene);
+    connect(a, &QAction::triggered, m_files, &DocumentManager::newScene);
     a = makeAction(QStringLiteral("open"), tr("&Open…"), QKeySequence::Open, tr("Open a scene file (Interplay or thesis format)"));
     a->setIcon(QIcon::fromTheme(QStringLiteral("document-open"), s->standardIcon(QStyle::SP_DialogOpenButton)));
-    connect(a, &QAction::triggered, this, [this] {
-        const QString dir = m_document->filePath().isEmpty() ? examplesDirectory() : QFileInfo(m_document->filePath()).absolutePath();
-        const QString path = m_prompts.chooseFile(FileChoice::Open, tr("Open Scene"), dir);
-        if (!path.isEmpty()) open(path);
-    });
+    connect(a, &QAction::triggered, m_files, &DocumentManager::openChosenFile);
     a = makeAction(QStringLiteral("import"), tr("&Import Thesis Scene…"), {},
                    tr("Open a scene of the 2018 thesis app; it is saved as a new Interplay scene"));
-    connect(a, &QAction::triggered, this, &MainWindow::importThesisScene);
+    connect(a, &QAction::triggered, m_files, &DocumentManager::importThesisScene);
     a = makeAction(QStringLiteral("save"), tr("&Save"), QKeySequence::Save, tr("Save the scene"));
     a->setIcon(QIcon::fromTheme(QStringLiteral("document-save"), s->standardIcon(QStyle::SP_DialogSaveButton)));
-    connect(a, &QAction::triggered, this, &MainWindow::save);
+    connect(a, &QAction::triggered, m_files, &DocumentManager::save);
     a = makeAction(QStringLiteral("saveAs"), tr("Save &As…"), QKeySequence::SaveAs, tr("Save the scene to a new file"));
-    connect(a, &QAction::triggered, this, &MainWindow::saveAs);
+    connect(a, &QAction::triggered, m_files, &DocumentManager::saveAs);
     a = makeAction(QStringLiteral("revert"), tr("Re&vert"), {}, tr("Drop unsaved changes and reload the file"));
-    connect(a, &QAction::triggered, this, &MainWindow::revert);
+    connect(a, &QAction::triggered, m_files, &DocumentManager::revert);
     a = makeAction(QStringLiteral("quit"), tr("&Quit"), QKeySequence::Quit, tr("Quit Interplay"));
     a->setMenuRole(QAction::QuitRole);
     connect(a, &QAction::triggered, this, &QWidget::close);
@@ -472,115 +449,11 @@ void MainWindow::createStatusBar() {
     fpsTimer->start(500);
 }
 
-// ---- Files ----------------------------------------------------------------------------------------
-
-bool MainWindow::openFile(const QString& path, QString* error) {
-    if (!m_document->load(path, error)) return false;
-    addRecentFile(path);
-    if (!m_document->loadWarnings().isEmpty()) {
-        statusBar()->showMessage(tr("Opened with %n warning(s): %1", nullptr, static_cast<int>(m_document->loadWarnings().size()))
-                                     .arg(m_document->loadWarnings().first()),
-                                 10000);
-    }
-    return true;
-}
-
-void MainWindow::openDefaultScene() {
-    m_document->newDefault();
-}
-
-bool MainWindow::newScene() {
-    if (!maybeSave()) return false;
-    m_document->newEmpty();
-    return true;
-}
-
-bool MainWindow::open(const QString& path) {
-    if (!maybeSave()) return false;
-    QString error;
-    if (!openFile(path, &error)) {
-        m_prompts.error(tr("Open Scene"), tr("The scene \"%1\" could not be opened.").arg(QFileInfo(path).fileName()), error);
-        return false;
-    }
-    return true;
-}
-
-bool MainWindow::save() {
-    if (m_document->filePath().isEmpty()) return saveAs();
-    QString error;
-    if (!m_document->save(m_document->filePath(), &error)) {
-        m_prompts.error(tr("Save Scene"), tr("The scene was not saved. The file on disk is unchanged."), error);
-        return false;
-    }
-    removeRecoveryFile();
-    statusBar()->showMessage(tr("Saved %1").arg(m_document->filePath()), 4000);
-    return true;
-}
-
-bool MainWindow::saveAs() {
-    const QString dir = m_document->filePath().isEmpty() ? QDir::homePath() : m_document->filePath();
-    QString path = m_prompts.chooseFile(FileChoice::Save, tr("Save Scene As"), dir);
-    if (path.isEmpty()) return false;
-    if (QFileInfo(path).suffix().isEmpty()) path += QStringLiteral(".json");
-    QString error;
-    if (!m_document->save(path, &error)) {
-        m_prompts.error(tr("Save Scene"), tr("The scene was not saved. The file on disk is unchanged."), error);
-        return false;
-    }
-    removeRecoveryFile();
-    addRecentFile(path);
-    return true;
-}
-
-bool MainWindow::revert() {
-    if (m_document->filePath().isEmpty()) return false;
-    QString error;
-    if (!m_document->revert(&error)) {
-        m_prompts.error(tr("Revert"), tr("The file could not be read again; the scene is as it was."), error);
-        return false;
-    }
-    removeRecoveryFile();
-    return true;
-}
-
-bool MainWindow::maybeSave() {
-    if (!m_document->isModified()) return true;
-    switch (m_prompts.unsavedChanges(m_document->displayName())) {
-    case UnsavedChoice::Save: return save();
-    case UnsavedChoice::Discard: return true;
-    case UnsavedChoice::Cancel: return false;
-    }
-    return false;
-}
-
-void MainWindow::importThesisScene() {
-    const QString path = m_prompts.chooseFile(FileChoice::Open, tr("Import Thesis Scene"),
-                                              QDir(examplesDirectory()).filePath(QStringLiteral("thesis")));
-    if (!path.isEmpty()) open(path);  // the document recognises the format and imports it
-}
-
-QStringList MainWindow::recentFiles() const {
-    return QSettings().value(kRecentFilesKey).toStringList();
-}
-
-void MainWindow::clearRecentFiles() {
-    QSettings().remove(kRecentFilesKey);
-    rebuildRecentMenu();
-}
-
-void MainWindow::addRecentFile(const QString& path) {
-    const QString absolute = QFileInfo(path).absoluteFilePath();
-    QStringList files = recentFiles();
-    files.removeAll(absolute);
-    files.prepend(absolute);
-    while (files.size() > kMaxRecentFiles) files.removeLast();
-    QSettings().setValue(kRecentFilesKey, files);
-    rebuildRecentMenu();
-}
+// ---- File menus ----------------------------------------------------------------------------------
 
 void MainWindow::rebuildRecentMenu() {
     m_recentMenu->clear();
-    const QStringList files = recentFiles();
+    const QStringList files = m_files->recentFiles();
     for (int i = 0; i < files.size(); ++i) {
         const QString& path = files[i];
         // &1..&9 as keyboard accelerators, as most editors do.
@@ -588,114 +461,26 @@ void MainWindow::rebuildRecentMenu() {
                                                    : QFileInfo(path).fileName());
         a->setStatusTip(path);
         a->setToolTip(path);
-        connect(a, &QAction::triggered, this, [this, path] { open(path); });
+        connect(a, &QAction::triggered, m_files, [this, path] { m_files->open(path); });
     }
     if (!files.isEmpty()) m_recentMenu->addSeparator();
-    QAction* clear = m_recentMenu->addAction(tr("&Clear Menu"), this, &MainWindow::clearRecentFiles);
+    QAction* clear = m_recentMenu->addAction(tr("&Clear Menu"), m_files, &DocumentManager::clearRecentFiles);
     clear->setObjectName(QStringLiteral("clearRecent"));
     clear->setEnabled(!files.isEmpty());
 }
 
-QString MainWindow::examplesDirectory() {
-    // Installed: scenes/ beside the program. From a build tree: the repository's scenes/.
-    const QString beside = QDir(QCoreApplication::applicationDirPath()).filePath(QStringLiteral("scenes"));
-    if (QFileInfo(beside).isDir()) return beside;
-    return QStringLiteral(INTERPLAY_SCENES_DIR);
-}
-
 void MainWindow::rebuildExamplesMenu() {
     m_examplesMenu->clear();
-    const QDir dir(examplesDirectory());
+    const QDir dir(DocumentManager::examplesDirectory());
     const auto addScenes = [this](QMenu* menu, const QDir& folder) {
         for (const QFileInfo& info : folder.entryInfoList({QStringLiteral("*.json")}, QDir::Files, QDir::Name)) {
             const QString path = info.absoluteFilePath();
-            connect(menu->addAction(info.completeBaseName()), &QAction::triggered, this, [this, path] { open(path); });
+            connect(menu->addAction(info.completeBaseName()), &QAction::triggered, m_files, [this, path] { m_files->open(path); });
         }
     };
     addScenes(m_examplesMenu, dir);
     if (dir.exists(QStringLiteral("thesis"))) addScenes(m_examplesMenu->addMenu(tr("Thesis")), QDir(dir.filePath(QStringLiteral("thesis"))));
     m_examplesMenu->setEnabled(!m_examplesMenu->isEmpty());
-}
-
-// ---- Watching the file, autosave and recovery -------------------------------------------------------
-
-void MainWindow::watchDocumentFile() {
-    if (!m_watcher->files().isEmpty()) m_watcher->removePaths(m_watcher->files());
-    const QString path = m_document->filePath();
-    m_expectedFileStamp = path.isEmpty() ? QString() : fileStamp(path);
-    // Saving replaces the file (write and rename), which drops it from the watch: add it again.
-    if (!path.isEmpty() && QFileInfo::exists(path)) m_watcher->addPath(path);
-}
-
-void MainWindow::documentFileChanged(const QString& path) {
-    if (path != m_document->filePath()) return;
-    const QString stamp = fileStamp(path);
-    if (stamp.isEmpty() || stamp == m_expectedFileStamp) {
-        // Deleted (nothing to reload; saving will recreate it), or our own write.
-        if (!stamp.isEmpty()) m_watcher->addPath(path);
-        return;
-    }
-    m_expectedFileStamp = stamp;  // ask once per outside change
-    m_watcher->addPath(path);
-    const QString question =
-        m_document->isModified()
-            ? tr("\"%1\" was changed by another program. Reload it and lose your unsaved changes?").arg(QFileInfo(path).fileName())
-            : tr("\"%1\" was changed by another program. Reload it?").arg(QFileInfo(path).fileName());
-    if (m_prompts.confirm(tr("File Changed"), question)) revert();
-}
-
-QString MainWindow::recoveryFilePath() {
-    return QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation))
-        .filePath(QStringLiteral("recovery/autosave.json"));
-}
-
-void MainWindow::setAutosaveInterval(int milliseconds) {
-    m_autosaveTimer->start(milliseconds);
-}
-
-void MainWindow::autosaveNow() {
-    if (!m_document->isModified()) return;
-    const QString path = recoveryFilePath();
-    QDir().mkpath(QFileInfo(path).absolutePath());
-    const std::string text = simcore::serializeScene(m_document->scene());
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly) || file.write(text.data(), static_cast<qint64>(text.size())) < 0 || !file.commit()) {
-        statusBar()->showMessage(tr("Autosave failed: %1").arg(file.errorString()), 8000);
-        return;
-    }
-    // Which file the recovered scene belongs to, so Save after recovery goes to the right place.
-    QSaveFile origin(recoveryMetaPath());
-    if (origin.open(QIODevice::WriteOnly)) {
-        origin.write(m_document->filePath().toUtf8());
-        origin.commit();
-    }
-}
-
-void MainWindow::removeRecoveryFile() {
-    QFile::remove(recoveryFilePath());
-    QFile::remove(recoveryMetaPath());
-}
-
-bool MainWindow::offerRecovery() {
-    const QString path = recoveryFilePath();
-    if (!QFileInfo::exists(path)) return false;
-    QFile originFile(recoveryMetaPath());
-    const QString origin = originFile.open(QIODevice::ReadOnly) ? QString::fromUtf8(originFile.readAll()) : QString();
-    const QString name = origin.isEmpty() ? tr("an untitled scene") : QStringLiteral("\"%1\"").arg(QFileInfo(origin).fileName());
-    if (!m_prompts.confirm(tr("Recover Scene"),
-                           tr("Interplay did not close normally. Recover the unsaved changes to %1?").arg(name))) {
-        removeRecoveryFile();
-        return false;
-    }
-    const simcore::SceneLoadResult result = simcore::loadSceneFile(std::filesystem::path(QFile::encodeName(path).toStdString()));
-    if (!result.ok()) {
-        QStringList errors;
-        for (const simcore::Diagnostic& d : result.diagnostics) errors << QString::fromStdString(d.toString());
-        m_prompts.error(tr("Recover Scene"), tr("The recovery file could not be read."), errors.join(u'\n'));
-        return false;
-    }
-    m_document->restoreRecovered(*result.scene, origin);
-    return true;
 }
 
 // ---- Editing --------------------------------------------------------------------------------------
@@ -806,11 +591,9 @@ void MainWindow::throwBody() {
 // ---- Keeping things in step ------------------------------------------------------------------------
 
 void MainWindow::documentSceneReplaced() {
-    // A clean scene (new, opened, reverted) makes any earlier autosave stale.
-    if (!m_document->isModified()) removeRecoveryFile();
     QString error;
     if (!m_simulation->setScene(m_document->scene(), &error)) {
-        m_prompts.error(tr("Scene"), tr("The scene cannot be simulated."), error);
+        m_files->prompts().error(tr("Scene"), tr("The scene cannot be simulated."), error);
         return;
     }
     m_viewport->frameScene();
@@ -862,18 +645,18 @@ void MainWindow::updateStatus() {
 
 void MainWindow::showSimulationError(const QString& message) {
     statusBar()->showMessage(message, 10000);
-    m_prompts.error(tr("Simulation"), message, QString());
+    m_files->prompts().error(tr("Simulation"), message, QString());
 }
 
 // ---- Window events ----------------------------------------------------------------------------------
 
 void MainWindow::closeEvent(QCloseEvent* event) {
-    if (!maybeSave()) {
+    if (!m_files->maybeSave()) {
         event->ignore();
         return;
     }
     saveLayout();
-    removeRecoveryFile();  // a normal exit leaves nothing to recover
+    m_files->removeRecoveryFile();  // a normal exit leaves nothing to recover
     event->accept();
 }
 
@@ -891,7 +674,7 @@ void MainWindow::dropEvent(QDropEvent* event) {
     event->acceptProposedAction();
     // Opening asks questions (unsaved changes); not while the drag source waits for the drop.
     const QString path = urls.first().toLocalFile();
-    QTimer::singleShot(0, this, [this, path] { open(path); });
+    QTimer::singleShot(0, m_files, [this, path] { m_files->open(path); });
 }
 
 void MainWindow::restoreLayout() {
