@@ -2,9 +2,9 @@
 
 #include "app/document/body_templates.h"
 #include "app/document/document_manager.h"
+#include "app/document/scene_actions.h"
 #include "app/document/scene_document.h"
 #include "app/document/scene_tree_model.h"
-#include "app/document/undo_commands.h"
 #include "app/panels/inspector_panel.h"
 #include "app/panels/profiler_panel.h"
 #include "app/panels/simulation_settings_model.h"
@@ -28,7 +28,6 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
-#include <QRegularExpression>
 #include <QSettings>
 #include <QStatusBar>
 #include <QStyle>
@@ -39,9 +38,6 @@
 #include <QUndoStack>
 #include <QUndoView>
 
-#include <algorithm>
-#include <optional>
-
 namespace interplay {
 namespace {
 
@@ -49,17 +45,6 @@ constexpr float kThrowSpeed = 14.0f;  // m/s along the view
 const QString kGeometryKey = QStringLiteral("mainWindow/geometry");
 const QString kStateKey = QStringLiteral("mainWindow/state");
 const QString kSceneFilter = QStringLiteral("Scenes (*.json);;All files (*)");
-
-// The Add Joint actions by object name, in menu order.
-struct JointAction {
-    simcore::JointType type;
-    const char* objectName;
-};
-constexpr JointAction kJointActions[] = {
-    {simcore::JointType::Ball, "addBallJoint"},   {simcore::JointType::Hinge, "addHingeJoint"},
-    {simcore::JointType::Slider, "addSliderJoint"}, {simcore::JointType::Fixed, "addFixedJoint"},
-    {simcore::JointType::Distance, "addDistanceJoint"},
-};
 
 // The manager's questions as the dialogs a desktop user expects.
 DocumentManager::Prompts dialogPrompts(QWidget* parent) {
@@ -96,12 +81,14 @@ MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent),
       m_document(new SceneDocument(this)),
       m_files(new DocumentManager(m_document, this)),
+      m_sceneActions(new SceneActions(m_document, this)),
       m_simulation(new SimulationController(this)),
       m_viewport(new Viewport(this)),
       m_debugDraw(new DebugDrawOptions(this)),
       m_settingsModel(new SimulationSettingsModel(m_document, this)),
       m_sceneTreeModel(new SceneTreeModel(m_document, this)) {
     m_files->prompts() = dialogPrompts(this);
+    m_sceneActions->setPlacement([this](float bodyHalfHeight) { return m_viewport->placementPoint(bodyHalfHeight); });
     setCentralWidget(m_viewport);
     m_viewport->setSimulation(m_simulation);
     m_viewport->setDocument(m_document);
@@ -123,12 +110,10 @@ MainWindow::MainWindow(QWidget* parent)
     m_simulation->followDocument(m_document);
     connect(m_simulation, &SimulationController::editFailed, this, &MainWindow::showSimulationError);
     connect(m_document, &SceneDocument::selectionChanged, this, &MainWindow::syncTreeSelection);
-    connect(m_document, &SceneDocument::selectionChanged, this, &MainWindow::updateJointActions);
-    connect(m_document, &SceneDocument::bodyChanged, this, &MainWindow::updateJointActions);
-    connect(m_settingsModel, &SimulationSettingsModel::rejected, this,
-            [this](const QString& message) { statusBar()->showMessage(message, 8000); });
-    connect(m_inspector, &InspectorPanel::rejected, this,
-            [this](const QString& message) { statusBar()->showMessage(message, 8000); });
+    const auto showRejection = [this](const QString& message) { statusBar()->showMessage(message, 8000); };
+    connect(m_settingsModel, &SimulationSettingsModel::rejected, this, showRejection);
+    connect(m_inspector, &InspectorPanel::rejected, this, showRejection);
+    connect(m_sceneActions, &SceneActions::rejected, this, showRejection);
     connect(m_files, &DocumentManager::statusMessage, statusBar(), &QStatusBar::showMessage);
 
     connect(m_simulation, &SimulationController::stepped, this, &MainWindow::updateStatus);
@@ -142,7 +127,6 @@ MainWindow::MainWindow(QWidget* parent)
     restoreLayout();
     updateTitle();
     updateStatus();
-    updateJointActions();
 }
 
 MainWindow::~MainWindow() {
@@ -205,36 +189,12 @@ void MainWindow::createActions() {
     redo->setObjectName(QStringLiteral("redo"));
     redo->setShortcut(QKeySequence::Redo);
     redo->setIcon(QIcon::fromTheme(QStringLiteral("edit-redo"), s->standardIcon(QStyle::SP_ArrowForward)));
-    a = makeAction(QStringLiteral("delete"), tr("&Delete"), QKeySequence::Delete,
-                   tr("Delete the selected bodies (with their joints) and joints"));
-    a->setIcon(QIcon::fromTheme(QStringLiteral("edit-delete"), s->standardIcon(QStyle::SP_TrashIcon)));
-    connect(a, &QAction::triggered, this, &MainWindow::deleteSelection);
-    a = makeAction(QStringLiteral("duplicate"), tr("D&uplicate"), Qt::CTRL | Qt::Key_D, tr("Copy the selected bodies beside them"));
-    connect(a, &QAction::triggered, this, &MainWindow::duplicateSelection);
-    a = makeAction(QStringLiteral("selectAll"), tr("Select &All"), QKeySequence::SelectAll, tr("Select every body"));
-    connect(a, &QAction::triggered, this, [this] {
-        QList<int> all;
-        for (int i = 0; i < m_document->bodyCount(); ++i) all << i;
-        m_document->setSelectedBodies(all);
-    });
+    // The scene's edit actions are SceneActions'; the window gives them its theme's icons.
+    m_sceneActions->deleteAction()->setIcon(
+        QIcon::fromTheme(QStringLiteral("edit-delete"), s->standardIcon(QStyle::SP_TrashIcon)));
     a = makeAction(QStringLiteral("applyPose"), tr("Apply Simulated &Pose"), {},
                    tr("Make the bodies' current simulated positions, orientations and velocities the authored scene"));
     connect(a, &QAction::triggered, this, &MainWindow::applySimulatedPose);
-
-    // Add.
-    static const char* const kAddNames[] = {"addSphere", "addBox", "addCapsule", "addCylinder", "addHull"};
-    for (int type = 0; type < simcore::kShapeTypeCount; ++type) {
-        const auto shape = static_cast<simcore::ShapeType>(type);
-        a = makeAction(QLatin1String(kAddNames[type]), tr("Add %1").arg(shapeDisplayName(shape)), {},
-                       tr("Add a %1 above the point the camera looks at").arg(shapeDisplayName(shape).toLower()));
-        connect(a, &QAction::triggered, this, [this, type] { addBody(type); });
-    }
-
-    // Add Joint: one action per type; updateJointActions enables them and says why not.
-    for (const JointAction& joint : kJointActions) {
-        a = makeAction(QLatin1String(joint.objectName), tr("Add %1 Joint").arg(jointTypeDisplayName(joint.type)), {}, {});
-        connect(a, &QAction::triggered, this, [this, type = joint.type] { addJoint(static_cast<int>(type)); });
-    }
 
     // View.
     a = makeAction(QStringLiteral("frameSelection"), tr("&Frame Selection"), Qt::Key_F,
@@ -363,21 +323,22 @@ void MainWindow::createMenusAndToolBars() {
     edit->addAction(action(QStringLiteral("undo")));
     edit->addAction(action(QStringLiteral("redo")));
     edit->addSeparator();
-    edit->addAction(action(QStringLiteral("duplicate")));
-    edit->addAction(action(QStringLiteral("delete")));
-    edit->addAction(action(QStringLiteral("selectAll")));
+    edit->addAction(m_sceneActions->duplicateAction());
+    edit->addAction(m_sceneActions->deleteAction());
+    edit->addAction(m_sceneActions->selectAllAction());
     edit->addSeparator();
     edit->addAction(action(QStringLiteral("applyPose")));
 
+    // Menu order: the box first (the actions themselves are in ShapeType order).
+    using simcore::ShapeType;
+    const ShapeType addOrder[] = {ShapeType::Box, ShapeType::Sphere, ShapeType::Capsule, ShapeType::Cylinder, ShapeType::ConvexHull};
     QMenu* add = menuBar()->addMenu(tr("&Add"));
-    for (const char* name : {"addBox", "addSphere", "addCapsule", "addCylinder", "addHull"}) {
-        add->addAction(action(QLatin1String(name)));
-    }
+    for (ShapeType type : addOrder) add->addAction(m_sceneActions->addBodyAction(type));
     add->addSeparator();
     QMenu* joints = add->addMenu(tr("Add &Joint"));
     joints->setObjectName(QStringLiteral("addJointMenu"));
     joints->setToolTipsVisible(true);  // a disabled entry says what selection it needs
-    for (const JointAction& joint : kJointActions) joints->addAction(action(QLatin1String(joint.objectName)));
+    joints->addActions(m_sceneActions->addJointActions());
 
     QMenu* simulation = menuBar()->addMenu(tr("&Simulation"));
     simulation->addAction(m_playAction);
@@ -417,9 +378,7 @@ void MainWindow::createMenusAndToolBars() {
     QToolBar* addBar = addToolBar(tr("Add"));
     addBar->setObjectName(QStringLiteral("addToolBar"));
     addBar->setToolButtonStyle(Qt::ToolButtonTextOnly);
-    for (const char* name : {"addBox", "addSphere", "addCapsule", "addCylinder", "addHull"}) {
-        addBar->addAction(action(QLatin1String(name)));
-    }
+    for (ShapeType type : addOrder) addBar->addAction(m_sceneActions->addBodyAction(type));
     auto* jointButton = new QToolButton;
     jointButton->setText(tr("Joint"));
     jointButton->setToolTip(tr("Add a joint between the selected bodies, or from one body to the world"));
@@ -427,8 +386,8 @@ void MainWindow::createMenusAndToolBars() {
     jointButton->setPopupMode(QToolButton::InstantPopup);
     addBar->addWidget(jointButton);
     addBar->addSeparator();
-    addBar->addAction(action(QStringLiteral("duplicate")));
-    addBar->addAction(action(QStringLiteral("delete")));
+    addBar->addAction(m_sceneActions->duplicateAction());
+    addBar->addAction(m_sceneActions->deleteAction());
 }
 
 void MainWindow::createStatusBar() {
@@ -484,87 +443,6 @@ void MainWindow::rebuildExamplesMenu() {
 }
 
 // ---- Editing --------------------------------------------------------------------------------------
-
-void MainWindow::addBody(int shapeType) {
-    const auto type = static_cast<simcore::ShapeType>(shapeType);
-    const simcore::Shape shape = templateShape(type);
-    const simcore::Aabb bounds = simcore::localBounds(shape);
-    const simcore::Vec3 position = m_viewport->placementPoint(0.5f * (bounds.max.y - bounds.min.y));
-    simcore::SceneBody body = templateBody(type, m_document->uniqueBodyName(shapeDisplayName(type)), position);
-    const QString name = QString::fromStdString(body.body.name);
-    m_document->undoStack()->push(
-        new AddBodies(m_document, tr("Add %1").arg(name), {m_document->bodyCount()}, {std::move(body)}));
-}
-
-void MainWindow::addJoint(int jointType) {
-    const QList<int>& bodies = m_document->selectedBodies();
-    if (bodies.isEmpty() || bodies.size() > 2) return;
-    const auto type = static_cast<simcore::JointType>(jointType);
-    const std::optional<std::size_t> bodyB =
-        bodies.size() == 2 ? std::optional<std::size_t>(static_cast<std::size_t>(bodies[1])) : std::nullopt;
-    simcore::SceneJoint joint = templateJoint(type, m_document->uniqueJointName(tr("Joint")), m_document->scene().bodies,
-                                              static_cast<std::size_t>(bodies[0]), bodyB);
-    // Two bodies at one point leave a distance joint no length, for instance.
-    if (const QString problem = m_document->jointProblem(joint); !problem.isEmpty()) {
-        statusBar()->showMessage(tr("No joint added: %1").arg(problem), 8000);
-        return;
-    }
-    m_document->undoStack()->push(new AddJoint(m_document, tr("Add %1 Joint").arg(jointTypeDisplayName(type)),
-                                               m_document->jointCount(), std::move(joint)));
-}
-
-void MainWindow::updateJointActions() {
-    const QList<int>& bodies = m_document->selectedBodies();
-    const bool anyDynamic = std::any_of(bodies.begin(), bodies.end(), [this](int i) {
-        return m_document->body(i).body.motion == simcore::MotionType::Dynamic;
-    });
-    QString why;  // what the selection lacks, or empty when it fits
-    if (bodies.isEmpty() || bodies.size() > 2) {
-        why = tr("Select two bodies to join them, or one body to hold it to the world.");
-    } else if (!anyDynamic) {
-        why = tr("A joint needs a dynamic body to act on; the selected bodies do not move.");
-    }
-    for (const JointAction& joint : kJointActions) {
-        QAction* a = action(QLatin1String(joint.objectName));
-        const QString type = jointTypeDisplayName(joint.type).toLower();
-        QString tip = why;
-        if (why.isEmpty() && bodies.size() == 2) {
-            tip = tr("Join %1 and %2 with a %3 joint").arg(m_document->bodyName(bodies[0]), m_document->bodyName(bodies[1]), type);
-        } else if (why.isEmpty()) {
-            tip = tr("Hold %1 to the world with a %2 joint").arg(m_document->bodyName(bodies[0]), type);
-        }
-        a->setEnabled(why.isEmpty());
-        a->setStatusTip(tip);
-        a->setToolTip(tip);
-    }
-}
-
-void MainWindow::deleteSelection() {
-    if (m_document->selectedBodies().isEmpty() && m_document->selectedJoints().isEmpty()) return;
-    m_document->undoStack()->push(new RemoveBodies(m_document, m_document->selectedBodies(), m_document->selectedJoints()));
-}
-
-void MainWindow::duplicateSelection() {
-    const QList<int> selection = m_document->selectedBodies();
-    if (selection.isEmpty()) return;
-    static const QRegularExpression trailingNumber(QStringLiteral("\\s*\\d+$"));
-    std::vector<simcore::SceneBody> copies;
-    QList<int> indices;
-    QStringList newNames;
-    for (int index : selection) {
-        simcore::SceneBody copy = m_document->body(index);
-        // "Box 3" copies to the next free "Box N"; the copy sits beside the original, not in it.
-        const QString base = QString::fromStdString(copy.body.name).remove(trailingNumber);
-        newNames << m_document->uniqueBodyName(base.isEmpty() ? tr("Body") : base, newNames);
-        copy.body.name = newNames.last().toStdString();
-        const simcore::Aabb bounds = simcore::worldBounds(copy.body.shape, {copy.body.position, copy.body.orientation});
-        copy.body.position.x += bounds.max.x - bounds.min.x + 0.1f;
-        indices << m_document->bodyCount() + static_cast<int>(copies.size());
-        copies.push_back(std::move(copy));
-    }
-    m_document->undoStack()->push(new AddBodies(m_document, tr("Duplicate %1").arg(bodiesLabel(*m_document, selection)),
-                                                indices, std::move(copies)));
-}
 
 void MainWindow::applySimulatedPose() {
     QString error;

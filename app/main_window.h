@@ -1,9 +1,9 @@
 #pragma once
 // The editor's main window: wires the document, the simulation controller, the viewport and the
 // dock panels together and hosts the menus, toolbars and status bar. Panels talk to the document
-// and the controller, never to each other. File handling is the DocumentManager's (in the model
-// layer); the window answers its prompts with dialogs, which tests replace so that nothing waits
-// on a modal dialog.
+// and the controller, never to each other. File handling is the DocumentManager's and the scene's
+// edit actions are SceneActions' (both in the model layer); the window answers the manager's
+// prompts with dialogs, which tests replace so that nothing waits on a modal dialog.
 
 #include <QMainWindow>
 #include <QString>
@@ -21,6 +21,7 @@ class DebugDrawOptions;
 class DocumentManager;
 class InspectorPanel;
 class ProfilerPanel;
+class SceneActions;
 class SceneDocument;
 class SceneTreeModel;
 class SimulationController;
@@ -37,6 +38,7 @@ public:
 
     SceneDocument* document() const { return m_document; }
     DocumentManager* documentManager() const { return m_files; }
+    SceneActions* sceneActions() const { return m_sceneActions; }
     SimulationController* simulation() const { return m_simulation; }
     Viewport* viewport() const { return m_viewport; }
     SceneTreeModel* sceneTreeModel() const { return m_sceneTreeModel; }
@@ -74,11 +76,6 @@ private:
     // A new scene (new, opened, reverted, recovered): the world is rebuilt from it and framed.
     void documentSceneReplaced();
     void syncTreeSelection();
-    void addBody(int shapeType);
-    void addJoint(int jointType);
-    void updateJointActions();  // Add Joint fits a selection of one or two bodies
-    void deleteSelection();
-    void duplicateSelection();
     void applySimulatedPose();
     void throwBody();
     void rebuildRecentMenu();
@@ -88,6 +85,7 @@ private:
 
     SceneDocument* m_document = nullptr;
     DocumentManager* m_files = nullptr;
+    SceneActions* m_sceneActions = nullptr;
     SimulationController* m_simulation = nullptr;
     Viewport* m_viewport = nullptr;
     DebugDrawOptions* m_debugDraw = nullptr;

@@ -162,6 +162,7 @@ private slots:
     void grabbingWhilePlayingPullsTheBody();
     void applySimulatedPoseIsUndoable();
     void addDuplicateDeleteActions();
+    void shortcutsReachTheSceneActionsAndFileCommands();
     void treeSelectionFollowsTheDocument();
     void throwSpawnsIntoTheRunningWorldOnly();
     void editsWhilePausedKeepTheRun();
@@ -637,6 +638,50 @@ void TestMainWindow::addDuplicateDeleteActions() {
     stack->undo();
     QCOMPARE(document->bodyCount(), count + 2);
     QCOMPARE(m_window->simulation()->bodyIds().size(), std::size_t(count + 2));
+}
+
+// The keys a user presses, through Qt's shortcut map to SceneActions and the DocumentManager.
+void TestMainWindow::shortcutsReachTheSceneActionsAndFileCommands() {
+    interplay::SceneDocument* document = m_window->document();
+    QUndoStack* stack = document->undoStack();
+    m_window->activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(m_window.get()));
+    const int count = document->bodyCount();
+    document->setSelectedBodies({1});
+    const QString name = document->bodyName(1);
+
+    QTest::keyClick(m_window.get(), Qt::Key_D, Qt::ControlModifier);
+    QCOMPARE(document->bodyCount(), count + 1);
+    QCOMPARE(stack->undoText(), "Duplicate " + name);
+    QCOMPARE(document->selectedBodies(), QList<int>{count});
+    const QString copy = document->bodyName(count);
+    QTest::keyClick(m_window.get(), Qt::Key_Delete);
+    QCOMPARE(document->bodyCount(), count);
+    QCOMPARE(stack->undoText(), "Delete " + copy);
+    QTest::keyClick(m_window.get(), Qt::Key_A, Qt::ControlModifier);
+    QCOMPARE(document->selectedBodies().size(), count);
+
+    // Ctrl+S on an untitled scene asks where, saves there and lists the file under Open Recent.
+    const QString path = m_dir.filePath("shortcut.json");
+    m_prompts.fileAnswer = path;
+    QTest::keyClick(m_window.get(), Qt::Key_S, Qt::ControlModifier);
+    QCOMPARE(document->filePath(), path);
+    QVERIFY(!m_window->isWindowModified());
+    auto* recent = m_window->findChild<QMenu*>("recentMenu");
+    QCOMPARE(recent->actions().first()->toolTip(), path);
+
+    // Ctrl+N starts an untitled scene; the recent entry brings the saved one back; Ctrl+O opens another.
+    QTest::keyClick(m_window.get(), Qt::Key_N, Qt::ControlModifier);
+    QVERIFY(document->filePath().isEmpty());
+    QCOMPARE(m_window->windowTitle(), QString("[*]Untitled — Interplay"));
+    recent->actions().first()->trigger();
+    QCOMPARE(document->filePath(), path);
+    QCOMPARE(document->bodyCount(), count);
+    m_prompts.fileAnswer = INTERPLAY_SOURCE_DIR "/scenes/incline.json";
+    QTest::keyClick(m_window.get(), Qt::Key_O, Qt::ControlModifier);
+    QCOMPARE(document->filePath(), m_prompts.fileAnswer);
+    QCOMPARE(m_window->documentManager()->recentFiles(), (QStringList{m_prompts.fileAnswer, path}));
+    QCOMPARE(m_prompts.unsavedAsked, 0);  // nothing was unsaved at any point
 }
 
 void TestMainWindow::treeSelectionFollowsTheDocument() {
