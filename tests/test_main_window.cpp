@@ -138,6 +138,7 @@ class TestMainWindow : public QObject {
 
 private slots:
     void initTestCase();
+    void cleanupTestCase();
     void init();
     void cleanup();
 
@@ -187,11 +188,17 @@ private:
 };
 
 void TestMainWindow::initTestCase() {
-    // Settings, recent files and recovery files go to a test location, not the user's.
+    // Settings, recent files and recovery files go to a test location, not the user's, and one of
+    // this process's own: two checkouts testing at once on one machine must not share them.
     QStandardPaths::setTestModeEnabled(true);
     QCoreApplication::setOrganizationName("InterplayTests");
-    QCoreApplication::setApplicationName("test_main_window");
+    QCoreApplication::setApplicationName(QString("test_main_window-%1").arg(QCoreApplication::applicationPid()));
     QVERIFY(m_dir.isValid());
+}
+
+void TestMainWindow::cleanupTestCase() {
+    QFile::remove(QSettings().fileName());
+    QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation)).removeRecursively();
 }
 
 void TestMainWindow::init() {
