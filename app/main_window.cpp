@@ -140,43 +140,34 @@ MainWindow::~MainWindow() {
 
 // ---- Actions, menus, docks ----------------------------------------------------------------------
 
-QAction* MainWindow::makeAction(const QString& objectName, const QString& text, const QKeySequence& shortcut,
-                                const QString& statusTip) {
-    auto* action = new QAction(text, this);
-    action->setObjectName(objectName);
-    action->setShortcut(shortcut);
-    action->setStatusTip(statusTip);
-    return action;
-}
-
 QAction* MainWindow::action(const QString& objectName) const {
     return findChild<QAction*>(objectName);
 }
 
-void MainWindow::openDefaultScene() {
-    m_document->newDefault();
-}
+void MainWindow::openDefaultScene() { m_document->newDefault(); }
 
 void MainWindow::createActions() {
     QStyle* s = style();
     // File.
-    QAction* a = makeAction(QStringLiteral("new"), tr("&New"), QKeySequence::New, tr("Start an empty scene"));
+    QAction* a = createAction(this, QStringLiteral("new"), tr("&New"), QKeySequence::New, tr("Start an empty scene"));
     a->setIcon(QIcon::fromTheme(QStringLiteral("document-new"), s->standardIcon(QStyle::SP_FileIcon)));
     connect(a, &QAction::triggered, m_files, &DocumentManager::newScene);
-    a = makeAction(QStringLiteral("open"), tr("&Open…"), QKeySequence::Open, tr("Open a scene file (Interplay or thesis format)"));
+    a = createAction(this, QStringLiteral("open"), tr("&Open…"), QKeySequence::Open,
+                     tr("Open a scene file (Interplay or thesis format)"));
     a->setIcon(QIcon::fromTheme(QStringLiteral("document-open"), s->standardIcon(QStyle::SP_DialogOpenButton)));
     connect(a, &QAction::triggered, m_files, &DocumentManager::openChosenFile);
-    a = makeAction(QStringLiteral("import"), tr("&Import Thesis Scene…"), {},
-                   tr("Open a scene of the 2018 thesis app; it is saved as a new Interplay scene"));
+    a = createAction(this, QStringLiteral("import"), tr("&Import Thesis Scene…"), {},
+                     tr("Open a scene of the 2018 thesis app; it is saved as a new Interplay scene"));
     connect(a, &QAction::triggered, m_files, &DocumentManager::importThesisScene);
-    a = makeAction(QStringLiteral("save"), tr("&Save"), QKeySequence::Save, tr("Save the scene"));
+    a = createAction(this, QStringLiteral("save"), tr("&Save"), QKeySequence::Save, tr("Save the scene"));
     a->setIcon(QIcon::fromTheme(QStringLiteral("document-save"), s->standardIcon(QStyle::SP_DialogSaveButton)));
     connect(a, &QAction::triggered, m_files, &DocumentManager::save);
-    a = makeAction(QStringLiteral("saveAs"), tr("Save &As…"), QKeySequence::SaveAs, tr("Save the scene to a new file"));
+    a = createAction(this, QStringLiteral("saveAs"), tr("Save &As…"), QKeySequence::SaveAs,
+                     tr("Save the scene to a new file"));
     connect(a, &QAction::triggered, m_files, &DocumentManager::saveAs);
-    a = makeAction(QStringLiteral("revert"), tr("Re&vert"), {}, tr("Drop unsaved changes and reload the file"));
+    a = createAction(this, QStringLiteral("revert"), tr("Re&vert"), {}, tr("Drop unsaved changes and reload the file"));
     connect(a, &QAction::triggered, m_files, &DocumentManager::revert);
-    a = makeAction(QStringLiteral("quit"), tr("&Quit"), QKeySequence::Quit, tr("Quit Interplay"));
+    a = createAction(this, QStringLiteral("quit"), tr("&Quit"), QKeySequence::Quit, tr("Quit Interplay"));
     a->setMenuRole(QAction::QuitRole);
     connect(a, &QAction::triggered, this, &QWidget::close);
 
@@ -192,17 +183,19 @@ void MainWindow::createActions() {
     // The scene's edit actions are SceneActions'; the window gives them its theme's icons.
     m_sceneActions->deleteAction()->setIcon(
         QIcon::fromTheme(QStringLiteral("edit-delete"), s->standardIcon(QStyle::SP_TrashIcon)));
-    a = makeAction(QStringLiteral("applyPose"), tr("Apply Simulated &Pose"), {},
-                   tr("Make the bodies' current simulated positions, orientations and velocities the authored scene"));
+    a = createAction(
+        this, QStringLiteral("applyPose"), tr("Apply Simulated &Pose"), {},
+        tr("Make the bodies' current simulated positions, orientations and velocities the authored scene"));
     connect(a, &QAction::triggered, this, &MainWindow::applySimulatedPose);
 
     // View.
-    a = makeAction(QStringLiteral("frameSelection"), tr("&Frame Selection"), Qt::Key_F,
-                   tr("Aim the camera at the selected bodies (F)"));
+    a = createAction(this, QStringLiteral("frameSelection"), tr("&Frame Selection"), Qt::Key_F,
+                     tr("Aim the camera at the selected bodies (F)"));
     connect(a, &QAction::triggered, m_viewport, &Viewport::frameSelection);
 
     // Simulation.
-    m_playAction = makeAction(QStringLiteral("play"), tr("&Play"), Qt::Key_Space, tr("Run or pause the simulation (Space)"));
+    m_playAction = createAction(this, QStringLiteral("play"), tr("&Play"), Qt::Key_Space,
+                                tr("Run or pause the simulation (Space)"));
     m_playAction->setIcon(s->standardIcon(QStyle::SP_MediaPlay));
     m_playAction->setCheckable(true);
     connect(m_playAction, &QAction::toggled, m_simulation, &SimulationController::setPlaying);
@@ -211,14 +204,16 @@ void MainWindow::createActions() {
         m_playAction->setText(playing ? tr("&Pause") : tr("&Play"));
         m_playAction->setIcon(style()->standardIcon(playing ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
     });
-    a = makeAction(QStringLiteral("step"), tr("&Step"), Qt::Key_Period, tr("Advance one time step and pause (.)"));
+    a = createAction(this, QStringLiteral("step"), tr("&Step"), Qt::Key_Period,
+                     tr("Advance one time step and pause (.)"));
     a->setIcon(s->standardIcon(QStyle::SP_MediaSeekForward));
     connect(a, &QAction::triggered, m_simulation, &SimulationController::stepOnce);
-    a = makeAction(QStringLiteral("reset"), tr("&Reset"), Qt::CTRL | Qt::Key_R, tr("Return to the authored scene (Ctrl+R)"));
+    a = createAction(this, QStringLiteral("reset"), tr("&Reset"), Qt::CTRL | Qt::Key_R,
+                     tr("Return to the authored scene (Ctrl+R)"));
     a->setIcon(s->standardIcon(QStyle::SP_MediaSkipBackward));
     connect(a, &QAction::triggered, m_simulation, &SimulationController::reset);
-    a = makeAction(QStringLiteral("throw"), tr("&Throw"), Qt::Key_T,
-                   tr("Throw a body from the camera along the view (T); it lives until Reset"));
+    a = createAction(this, QStringLiteral("throw"), tr("&Throw"), Qt::Key_T,
+                     tr("Throw a body from the camera along the view (T); it lives until Reset"));
     connect(a, &QAction::triggered, this, &MainWindow::throwBody);
     m_throwShapes = new QActionGroup(this);
     for (int type = 0; type < simcore::kShapeTypeCount; ++type) {
@@ -331,7 +326,8 @@ void MainWindow::createMenusAndToolBars() {
 
     // Menu order: the box first (the actions themselves are in ShapeType order).
     using simcore::ShapeType;
-    const ShapeType addOrder[] = {ShapeType::Box, ShapeType::Sphere, ShapeType::Capsule, ShapeType::Cylinder, ShapeType::ConvexHull};
+    const ShapeType addOrder[] = {ShapeType::Box, ShapeType::Sphere, ShapeType::Capsule, ShapeType::Cylinder,
+                                  ShapeType::ConvexHull};
     QMenu* add = menuBar()->addMenu(tr("&Add"));
     for (ShapeType type : addOrder) add->addAction(m_sceneActions->addBodyAction(type));
     add->addSeparator();
@@ -434,7 +430,8 @@ void MainWindow::rebuildExamplesMenu() {
     const auto addScenes = [this](QMenu* menu, const QDir& folder) {
         for (const QFileInfo& info : folder.entryInfoList({QStringLiteral("*.json")}, QDir::Files, QDir::Name)) {
             const QString path = info.absoluteFilePath();
-            connect(menu->addAction(info.completeBaseName()), &QAction::triggered, m_files, [this, path] { m_files->open(path); });
+            connect(menu->addAction(info.completeBaseName()), &QAction::triggered, m_files,
+                    [this, path] { m_files->open(path); });
         }
     };
     addScenes(m_examplesMenu, dir);

@@ -48,7 +48,8 @@ public:
     ProfilerPanel* profiler() const { return m_profiler; }
     DebugDrawOptions* debugDrawOptions() const { return m_debugDraw; }
     QAction* action(const QString& objectName) const;  // e.g. "play", "save", "addBox"
-    void openDefaultScene();  // the built-in scene, as at start-up without a file
+    // The built-in scene, as at start-up without a file.
+    void openDefaultScene();
 
     // The default arrangement: every dock shown, sized to leave the viewport most of the window
     // (the first start's layout, and the one --window-screenshot uses).
@@ -69,8 +70,6 @@ private:
     void createMenusAndToolBars();
     void createDocks();
     void createStatusBar();
-    QAction* makeAction(const QString& objectName, const QString& text, const QKeySequence& shortcut,
-                        const QString& statusTip);
     QDockWidget* addDock(const QString& objectName, const QString& title, QWidget* widget, Qt::DockWidgetArea area);
 
     // A new scene (new, opened, reverted, recovered): the world is rebuilt from it and framed.

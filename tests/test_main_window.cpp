@@ -374,7 +374,8 @@ void TestMainWindow::recentFilesAreAbsoluteDeduplicatedAndCapped() {
 
     const QStringList scenes = QDir(INTERPLAY_SOURCE_DIR "/scenes").entryList({"*.json"}, QDir::Files);
     QVERIFY(scenes.size() > DocumentManager::kMaxRecentFiles);
-    for (const QString& name : scenes) QVERIFY(m_window->documentManager()->open(INTERPLAY_SOURCE_DIR "/scenes/" + name));
+    for (const QString& name : scenes)
+        QVERIFY(m_window->documentManager()->open(INTERPLAY_SOURCE_DIR "/scenes/" + name));
     QCOMPARE(m_window->documentManager()->recentFiles().size(), DocumentManager::kMaxRecentFiles);
 
     auto* menu = m_window->findChild<QMenu*>("recentMenu");
@@ -830,7 +831,8 @@ void TestMainWindow::jointAddedWhilePausedHoldsTheBodiesWhereTheyAre() {
 
 void TestMainWindow::draggingInABigSceneMovesOneBodyInPlace() {
     QString error;
-    QVERIFY2(m_window->documentManager()->openFile(INTERPLAY_SOURCE_DIR "/scenes/pile1k.json", &error), qPrintable(error));
+    QVERIFY2(m_window->documentManager()->openFile(INTERPLAY_SOURCE_DIR "/scenes/pile1k.json", &error),
+             qPrintable(error));
     interplay::Viewport* viewport = m_window->viewport();
     interplay::SceneDocument* document = m_window->document();
     interplay::SimulationController* simulation = m_window->simulation();

@@ -28,9 +28,7 @@ QString fileStamp(const QString& path) {
     return QStringLiteral("%1@%2").arg(info.size()).arg(info.lastModified().toMSecsSinceEpoch());
 }
 
-QString recoveryMetaPath() {
-    return DocumentManager::recoveryFilePath() + QStringLiteral(".origin");
-}
+QString recoveryMetaPath() { return DocumentManager::recoveryFilePath() + QStringLiteral(".origin"); }
 
 DocumentManager::Prompts unansweredPrompts() {
     DocumentManager::Prompts prompts;
@@ -69,8 +67,9 @@ bool DocumentManager::openFile(const QString& path, QString* error) {
     addRecentFile(path);
     const QStringList& warnings = m_document->loadWarnings();
     if (!warnings.isEmpty()) {
-        emit statusMessage(tr("Opened with %n warning(s): %1", nullptr, static_cast<int>(warnings.size())).arg(warnings.first()),
-                           10000);
+        emit statusMessage(
+            tr("Opened with %n warning(s): %1", nullptr, static_cast<int>(warnings.size())).arg(warnings.first()),
+            10000);
     }
     return true;
 }
@@ -85,14 +84,16 @@ bool DocumentManager::open(const QString& path) {
     if (!maybeSave()) return false;
     QString error;
     if (!openFile(path, &error)) {
-        m_prompts.error(tr("Open Scene"), tr("The scene \"%1\" could not be opened.").arg(QFileInfo(path).fileName()), error);
+        m_prompts.error(tr("Open Scene"), tr("The scene \"%1\" could not be opened.").arg(QFileInfo(path).fileName()),
+                        error);
         return false;
     }
     return true;
 }
 
 bool DocumentManager::openChosenFile() {
-    const QString dir = m_document->filePath().isEmpty() ? examplesDirectory() : QFileInfo(m_document->filePath()).absolutePath();
+    const QString dir =
+        m_document->filePath().isEmpty() ? examplesDirectory() : QFileInfo(m_document->filePath()).absolutePath();
     const QString path = m_prompts.chooseFile(FileChoice::Open, tr("Open Scene"), dir);
     return !path.isEmpty() && open(path);
 }
@@ -153,9 +154,7 @@ bool DocumentManager::maybeSave() {
 
 // ---- Recent files and examples -------------------------------------------------------------------
 
-QStringList DocumentManager::recentFiles() const {
-    return QSettings().value(kRecentFilesKey).toStringList();
-}
+QStringList DocumentManager::recentFiles() const { return QSettings().value(kRecentFilesKey).toStringList(); }
 
 void DocumentManager::clearRecentFiles() {
     QSettings().remove(kRecentFilesKey);
@@ -212,9 +211,7 @@ QString DocumentManager::recoveryFilePath() {
         .filePath(QStringLiteral("recovery/autosave.json"));
 }
 
-void DocumentManager::setAutosaveInterval(int milliseconds) {
-    m_autosaveTimer->start(milliseconds);
-}
+void DocumentManager::setAutosaveInterval(int milliseconds) { m_autosaveTimer->start(milliseconds); }
 
 void DocumentManager::autosaveNow() {
     if (!m_document->isModified()) return;
@@ -222,7 +219,8 @@ void DocumentManager::autosaveNow() {
     QDir().mkpath(QFileInfo(path).absolutePath());
     const std::string text = simcore::serializeScene(m_document->scene());
     QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly) || file.write(text.data(), static_cast<qint64>(text.size())) < 0 || !file.commit()) {
+    if (!file.open(QIODevice::WriteOnly) || file.write(text.data(), static_cast<qint64>(text.size())) < 0 ||
+        !file.commit()) {
         emit statusMessage(tr("Autosave failed: %1").arg(file.errorString()), 8000);
         return;
     }
@@ -244,13 +242,15 @@ bool DocumentManager::offerRecovery() {
     if (!QFileInfo::exists(path)) return false;
     QFile originFile(recoveryMetaPath());
     const QString origin = originFile.open(QIODevice::ReadOnly) ? QString::fromUtf8(originFile.readAll()) : QString();
-    const QString name = origin.isEmpty() ? tr("an untitled scene") : QStringLiteral("\"%1\"").arg(QFileInfo(origin).fileName());
+    const QString name =
+        origin.isEmpty() ? tr("an untitled scene") : QStringLiteral("\"%1\"").arg(QFileInfo(origin).fileName());
     if (!m_prompts.confirm(tr("Recover Scene"),
                            tr("Interplay did not close normally. Recover the unsaved changes to %1?").arg(name))) {
         removeRecoveryFile();
         return false;
     }
-    const simcore::SceneLoadResult result = simcore::loadSceneFile(std::filesystem::path(QFile::encodeName(path).toStdString()));
+    const simcore::SceneLoadResult result =
+        simcore::loadSceneFile(std::filesystem::path(QFile::encodeName(path).toStdString()));
     if (!result.ok()) {
         QStringList errors;
         for (const simcore::Diagnostic& d : result.diagnostics) errors << QString::fromStdString(d.toString());

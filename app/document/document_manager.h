@@ -50,8 +50,8 @@ public:
     // report failures through the prompts. Each returns whether it went through.
     bool newScene();
     bool open(const QString& path);
-    bool openChosenFile();      // asks for a file, beside the current one or among the examples
-    bool importThesisScene();   // asks for a scene of the 2018 thesis app among the examples
+    bool openChosenFile();     // asks for a file, beside the current one or among the examples
+    bool importThesisScene();  // asks for a scene of the 2018 thesis app among the examples
     bool save();
     bool saveAs();
     bool revert();

@@ -25,12 +25,21 @@ struct JointAction {
     const char* objectName;
 };
 constexpr JointAction kJointActions[] = {
-    {simcore::JointType::Ball, "addBallJoint"},   {simcore::JointType::Hinge, "addHingeJoint"},
-    {simcore::JointType::Slider, "addSliderJoint"}, {simcore::JointType::Fixed, "addFixedJoint"},
+    {simcore::JointType::Ball, "addBallJoint"},         {simcore::JointType::Hinge, "addHingeJoint"},
+    {simcore::JointType::Slider, "addSliderJoint"},     {simcore::JointType::Fixed, "addFixedJoint"},
     {simcore::JointType::Distance, "addDistanceJoint"},
 };
 
 }  // namespace
+
+QAction* createAction(QObject* owner, const QString& objectName, const QString& text, const QKeySequence& shortcut,
+                      const QString& statusTip) {
+    auto* action = new QAction(text, owner);
+    action->setObjectName(objectName);
+    action->setShortcut(shortcut);
+    action->setStatusTip(statusTip);
+    return action;
+}
 
 SceneActions::SceneActions(SceneDocument* document, QObject* parent)
     : QObject(parent),
@@ -38,23 +47,27 @@ SceneActions::SceneActions(SceneDocument* document, QObject* parent)
       m_placement([](float bodyHalfHeight) { return simcore::Vec3(0.0f, bodyHalfHeight, 0.0f); }) {
     for (int type = 0; type < simcore::kShapeTypeCount; ++type) {
         const auto shape = static_cast<simcore::ShapeType>(type);
-        QAction* a = makeAction(kAddBodyNames[type], tr("Add %1").arg(shapeDisplayName(shape)), {},
-                                tr("Add a %1 above the point the camera looks at").arg(shapeDisplayName(shape).toLower()));
+        QAction* a =
+            createAction(this, QLatin1String(kAddBodyNames[type]), tr("Add %1").arg(shapeDisplayName(shape)), {},
+                         tr("Add a %1 above the point the camera looks at").arg(shapeDisplayName(shape).toLower()));
         connect(a, &QAction::triggered, this, [this, shape] { addBody(shape); });
         m_addBody << a;
     }
     // One action per joint type; updateJointActions enables them and says why not.
     for (const JointAction& joint : kJointActions) {
-        QAction* a = makeAction(joint.objectName, tr("Add %1 Joint").arg(jointTypeDisplayName(joint.type)), {}, {});
+        QAction* a = createAction(this, QLatin1String(joint.objectName),
+                                  tr("Add %1 Joint").arg(jointTypeDisplayName(joint.type)), {}, {});
         connect(a, &QAction::triggered, this, [this, type = joint.type] { addJoint(type); });
         m_addJoint << a;
     }
-    m_duplicate = makeAction("duplicate", tr("D&uplicate"), Qt::CTRL | Qt::Key_D, tr("Copy the selected bodies beside them"));
+    m_duplicate = createAction(this, QStringLiteral("duplicate"), tr("D&uplicate"), Qt::CTRL | Qt::Key_D,
+                               tr("Copy the selected bodies beside them"));
     connect(m_duplicate, &QAction::triggered, this, &SceneActions::duplicateSelection);
-    m_delete = makeAction("delete", tr("&Delete"), QKeySequence::Delete,
-                          tr("Delete the selected bodies (with their joints) and joints"));
+    m_delete = createAction(this, QStringLiteral("delete"), tr("&Delete"), QKeySequence::Delete,
+                            tr("Delete the selected bodies (with their joints) and joints"));
     connect(m_delete, &QAction::triggered, this, &SceneActions::deleteSelection);
-    m_selectAll = makeAction("selectAll", tr("Select &All"), QKeySequence::SelectAll, tr("Select every body"));
+    m_selectAll = createAction(this, QStringLiteral("selectAll"), tr("Select &All"), QKeySequence::SelectAll,
+                               tr("Select every body"));
     connect(m_selectAll, &QAction::triggered, this, &SceneActions::selectAll);
 
     connect(m_document, &SceneDocument::selectionChanged, this, &SceneActions::updateJointActions);
@@ -62,18 +75,7 @@ SceneActions::SceneActions(SceneDocument* document, QObject* parent)
     updateJointActions();
 }
 
-QAction* SceneActions::makeAction(const char* objectName, const QString& text, const QKeySequence& shortcut,
-                                  const QString& statusTip) {
-    auto* action = new QAction(text, this);
-    action->setObjectName(QLatin1String(objectName));
-    action->setShortcut(shortcut);
-    action->setStatusTip(statusTip);
-    return action;
-}
-
-QAction* SceneActions::addBodyAction(simcore::ShapeType type) const {
-    return m_addBody[static_cast<int>(type)];
-}
+QAction* SceneActions::addBodyAction(simcore::ShapeType type) const { return m_addBody[static_cast<int>(type)]; }
 
 void SceneActions::addBody(simcore::ShapeType type) {
     const simcore::Aabb bounds = simcore::localBounds(templateShape(type));
@@ -89,8 +91,8 @@ void SceneActions::addJoint(simcore::JointType type) {
     if (bodies.isEmpty() || bodies.size() > 2) return;
     const std::optional<std::size_t> bodyB =
         bodies.size() == 2 ? std::optional<std::size_t>(static_cast<std::size_t>(bodies[1])) : std::nullopt;
-    simcore::SceneJoint joint = templateJoint(type, m_document->uniqueJointName(tr("Joint")), m_document->scene().bodies,
-                                              static_cast<std::size_t>(bodies[0]), bodyB);
+    simcore::SceneJoint joint = templateJoint(type, m_document->uniqueJointName(tr("Joint")),
+                                              m_document->scene().bodies, static_cast<std::size_t>(bodies[0]), bodyB);
     // Two bodies at one point leave a distance joint no length, for instance.
     if (const QString problem = m_document->jointProblem(joint); !problem.isEmpty()) {
         emit rejected(tr("No joint added: %1").arg(problem));
@@ -116,7 +118,8 @@ void SceneActions::updateJointActions() {
         const QString type = jointTypeDisplayName(kJointActions[i].type).toLower();
         QString tip = why;
         if (why.isEmpty() && bodies.size() == 2) {
-            tip = tr("Join %1 and %2 with a %3 joint").arg(m_document->bodyName(bodies[0]), m_document->bodyName(bodies[1]), type);
+            tip = tr("Join %1 and %2 with a %3 joint")
+                      .arg(m_document->bodyName(bodies[0]), m_document->bodyName(bodies[1]), type);
         } else if (why.isEmpty()) {
             tip = tr("Hold %1 to the world with a %2 joint").arg(m_document->bodyName(bodies[0]), type);
         }
@@ -150,7 +153,8 @@ void SceneActions::duplicateSelection() {
 
 void SceneActions::deleteSelection() {
     if (m_document->selectedBodies().isEmpty() && m_document->selectedJoints().isEmpty()) return;
-    m_document->undoStack()->push(new RemoveBodies(m_document, m_document->selectedBodies(), m_document->selectedJoints()));
+    m_document->undoStack()->push(
+        new RemoveBodies(m_document, m_document->selectedBodies(), m_document->selectedJoints()));
 }
 
 void SceneActions::selectAll() {

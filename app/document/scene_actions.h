@@ -12,10 +12,15 @@
 #include <functional>
 
 class QAction;
+class QKeySequence;
 
 namespace interplay {
 
 class SceneDocument;
+
+// An action owned by `owner`, named so that MainWindow::action() and tests find it.
+QAction* createAction(QObject* owner, const QString& objectName, const QString& text, const QKeySequence& shortcut,
+                      const QString& statusTip);
 
 class SceneActions : public QObject {
     Q_OBJECT
@@ -50,8 +55,6 @@ signals:
     void rejected(const QString& message);
 
 private:
-    QAction* makeAction(const char* objectName, const QString& text, const QKeySequence& shortcut,
-                        const QString& statusTip);
     void updateJointActions();  // Add Joint fits a selection of one or two bodies
 
     SceneDocument* m_document;
