@@ -1,8 +1,8 @@
 #pragma once
 // The scene's edit actions: Add (one per shape), Add Joint (one per type, enabled by the
-// selection, with a tip saying what it lacks), Duplicate, Delete and Select All. Each is a QAction
-// (QtGui) with its standard shortcut, and each edit is one undo command on the document's stack.
-// The window puts them in its menus and toolbars; tests trigger them without a window.
+// selection, with a tip saying what it lacks), Duplicate (Ctrl+D), Delete and Select All (the
+// platform's standard keys). Each is a QAction (QtGui), and each edit one undo command on the
+// document's stack. The window puts them in its menus and toolbars; tests trigger them without one.
 
 #include "simcore/io/scene.h"
 
