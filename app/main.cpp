@@ -6,6 +6,7 @@
 // its docks instead. In both modes --select selects the named bodies or joints first (outlined, shown in the Inspector),
 // --debug-draw turns overlays on, --show-settings brings the Simulation panel to the front.
 
+#include "app/document/document_manager.h"
 #include "app/document/scene_document.h"
 #include "app/main_window.h"
 #include "app/simulation/simulation_controller.h"
@@ -94,7 +95,7 @@ int main(int argc, char* argv[]) {
 
     interplay::MainWindow window;
     // A recovered scene wins over the command line: it holds work the user has not saved.
-    if (!screenshotMode && window.offerRecovery()) {
+    if (!screenshotMode && window.documentManager()->offerRecovery()) {
         window.show();
         return app.exec();
     }
@@ -102,7 +103,7 @@ int main(int argc, char* argv[]) {
         window.openDefaultScene();
     } else {
         QString error;
-        if (!window.openFile(positional.first(), &error)) {
+        if (!window.documentManager()->openFile(positional.first(), &error)) {
             if (screenshotMode) {
                 printError(error);
                 return kExitBadScene;

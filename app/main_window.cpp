@@ -1,9 +1,10 @@
 #include "app/main_window.h"
 
 #include "app/document/body_templates.h"
+#include "app/document/document_manager.h"
+#include "app/document/scene_actions.h"
 #include "app/document/scene_document.h"
 #include "app/document/scene_tree_model.h"
-#include "app/document/undo_commands.h"
 #include "app/panels/inspector_panel.h"
 #include "app/panels/profiler_panel.h"
 #include "app/panels/simulation_settings_model.h"
@@ -12,29 +13,22 @@
 #include "app/viewport/debug_draw_options.h"
 #include "app/viewport/viewport.h"
 
-#include "simcore/io/scene_io.h"
 #include "simcore/world/world.h"
 
 #include <QAction>
 #include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
-#include <QCoreApplication>
-#include <QDateTime>
 #include <QDir>
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
-#include <QFileSystemWatcher>
 #include <QHeaderView>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
-#include <QRegularExpression>
-#include <QSaveFile>
 #include <QSettings>
-#include <QStandardPaths>
 #include <QStatusBar>
 #include <QStyle>
 #include <QTimer>
@@ -44,51 +38,24 @@
 #include <QUndoStack>
 #include <QUndoView>
 
-#include <algorithm>
-#include <optional>
-
-
 namespace interplay {
 namespace {
 
-constexpr int kDefaultAutosaveMs = 60'000;
 constexpr float kThrowSpeed = 14.0f;  // m/s along the view
-const QString kRecentFilesKey = QStringLiteral("recentFiles");
 const QString kGeometryKey = QStringLiteral("mainWindow/geometry");
 const QString kStateKey = QStringLiteral("mainWindow/state");
 const QString kSceneFilter = QStringLiteral("Scenes (*.json);;All files (*)");
 
-// The Add Joint actions by object name, in menu order.
-struct JointAction {
-    simcore::JointType type;
-    const char* objectName;
-};
-constexpr JointAction kJointActions[] = {
-    {simcore::JointType::Ball, "addBallJoint"},   {simcore::JointType::Hinge, "addHingeJoint"},
-    {simcore::JointType::Slider, "addSliderJoint"}, {simcore::JointType::Fixed, "addFixedJoint"},
-    {simcore::JointType::Distance, "addDistanceJoint"},
-};
-
-// Size and modification time: what tells our own write apart from another program's.
-QString fileStamp(const QString& path) {
-    const QFileInfo info(path);
-    if (!info.exists()) return {};
-    return QStringLiteral("%1@%2").arg(info.size()).arg(info.lastModified().toMSecsSinceEpoch());
-}
-
-QString recoveryMetaPath() {
-    return MainWindow::recoveryFilePath() + QStringLiteral(".origin");
-}
-
-MainWindow::Prompts dialogPrompts(QWidget* parent) {
-    MainWindow::Prompts prompts;
+// The manager's questions as the dialogs a desktop user expects.
+DocumentManager::Prompts dialogPrompts(QWidget* parent) {
+    DocumentManager::Prompts prompts;
     prompts.unsavedChanges = [parent](const QString& name) {
         const auto answer = QMessageBox::warning(
             parent, QCoreApplication::applicationName(), MainWindow::tr("Save changes to \"%1\"?").arg(name),
             QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
-        if (answer == QMessageBox::Save) return MainWindow::UnsavedChoice::Save;
-        if (answer == QMessageBox::Discard) return MainWindow::UnsavedChoice::Discard;
-        return MainWindow::UnsavedChoice::Cancel;
+        if (answer == QMessageBox::Save) return DocumentManager::UnsavedChoice::Save;
+        if (answer == QMessageBox::Discard) return DocumentManager::UnsavedChoice::Discard;
+        return DocumentManager::UnsavedChoice::Cancel;
     };
     prompts.confirm = [parent](const QString& title, const QString& question) {
         return QMessageBox::question(parent, title, question, QMessageBox::Yes | QMessageBox::No, QMessageBox::Yes) ==
@@ -100,8 +67,8 @@ MainWindow::Prompts dialogPrompts(QWidget* parent) {
         box.setInformativeText(details);
         box.exec();
     };
-    prompts.chooseFile = [parent](MainWindow::FileChoice choice, const QString& title, const QString& directory) {
-        return choice == MainWindow::FileChoice::Open
+    prompts.chooseFile = [parent](DocumentManager::FileChoice choice, const QString& title, const QString& directory) {
+        return choice == DocumentManager::FileChoice::Open
                    ? QFileDialog::getOpenFileName(parent, title, directory, kSceneFilter)
                    : QFileDialog::getSaveFileName(parent, title, directory, kSceneFilter);
     };
@@ -113,14 +80,15 @@ MainWindow::Prompts dialogPrompts(QWidget* parent) {
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent),
       m_document(new SceneDocument(this)),
+      m_files(new DocumentManager(m_document, this)),
+      m_sceneActions(new SceneActions(m_document, this)),
       m_simulation(new SimulationController(this)),
       m_viewport(new Viewport(this)),
       m_debugDraw(new DebugDrawOptions(this)),
       m_settingsModel(new SimulationSettingsModel(m_document, this)),
-      m_sceneTreeModel(new SceneTreeModel(m_document, this)),
-      m_prompts(dialogPrompts(this)),
-      m_autosaveTimer(new QTimer(this)),
-      m_watcher(new QFileSystemWatcher(this)) {
+      m_sceneTreeModel(new SceneTreeModel(m_document, this)) {
+    m_files->prompts() = dialogPrompts(this);
+    m_sceneActions->setPlacement([this](float bodyHalfHeight) { return m_viewport->placementPoint(bodyHalfHeight); });
     setCentralWidget(m_viewport);
     m_viewport->setSimulation(m_simulation);
     m_viewport->setDocument(m_document);
@@ -136,19 +104,17 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_document, &SceneDocument::sceneReplaced, this, &MainWindow::documentSceneReplaced);
     connect(m_document, &SceneDocument::modifiedChanged, this, &MainWindow::updateTitle);
     connect(m_document, &SceneDocument::filePathChanged, this, &MainWindow::updateTitle);
-    connect(m_document, &SceneDocument::filePathChanged, this, &MainWindow::watchDocumentFile);
-    connect(m_document, &SceneDocument::saved, this, &MainWindow::watchDocumentFile);
+    connect(m_files, &DocumentManager::recentFilesChanged, this, &MainWindow::rebuildRecentMenu);
     // Each change of the document reaches the running world as it happens, in place: a run paused
     // mid-way keeps its state, and a drag moves one body instead of rebuilding the world.
     m_simulation->followDocument(m_document);
     connect(m_simulation, &SimulationController::editFailed, this, &MainWindow::showSimulationError);
     connect(m_document, &SceneDocument::selectionChanged, this, &MainWindow::syncTreeSelection);
-    connect(m_document, &SceneDocument::selectionChanged, this, &MainWindow::updateJointActions);
-    connect(m_document, &SceneDocument::bodyChanged, this, &MainWindow::updateJointActions);
-    connect(m_settingsModel, &SimulationSettingsModel::rejected, this,
-            [this](const QString& message) { statusBar()->showMessage(message, 8000); });
-    connect(m_inspector, &InspectorPanel::rejected, this,
-            [this](const QString& message) { statusBar()->showMessage(message, 8000); });
+    const auto showRejection = [this](const QString& message) { statusBar()->showMessage(message, 8000); };
+    connect(m_settingsModel, &SimulationSettingsModel::rejected, this, showRejection);
+    connect(m_inspector, &InspectorPanel::rejected, this, showRejection);
+    connect(m_sceneActions, &SceneActions::rejected, this, showRejection);
+    connect(m_files, &DocumentManager::statusMessage, statusBar(), &QStatusBar::showMessage);
 
     connect(m_simulation, &SimulationController::stepped, this, &MainWindow::updateStatus);
     connect(m_simulation, &SimulationController::worldRebuilt, this, &MainWindow::updateStatus);
@@ -156,22 +122,17 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_simulation, &SimulationController::simulationError, this, &MainWindow::showSimulationError);
     connect(m_simulation, &SimulationController::simulationWarning, this,
             [this](const QString& message) { statusBar()->showMessage(message, 15000); });
-    connect(m_watcher, &QFileSystemWatcher::fileChanged, this, &MainWindow::documentFileChanged);
-
-    connect(m_autosaveTimer, &QTimer::timeout, this, &MainWindow::autosaveNow);
-    m_autosaveTimer->start(kDefaultAutosaveMs);
 
     resize(1440, 900);
     restoreLayout();
     updateTitle();
     updateStatus();
-    updateJointActions();
 }
 
 MainWindow::~MainWindow() {
-    // The document is a child, destroyed after this destructor: nothing it emits on the way may
-    // reach a half-destroyed window.
-    m_document->disconnect(this);
+    // The document is a child, destroyed after this destructor with its siblings: nothing it emits
+    // on the way may reach the window or a listener half destroyed.
+    m_document->disconnect();
     // The QML panel goes first: its bindings read the settings model and the controller, which
     // are children of this window and would otherwise be destroyed under it.
     delete m_settingsPanel;
@@ -179,43 +140,34 @@ MainWindow::~MainWindow() {
 
 // ---- Actions, menus, docks ----------------------------------------------------------------------
 
-QAction* MainWindow::makeAction(const QString& objectName, const QString& text, const QKeySequence& shortcut,
-                                const QString& statusTip) {
-    auto* action = new QAction(text, this);
-    action->setObjectName(objectName);
-    action->setShortcut(shortcut);
-    action->setStatusTip(statusTip);
-    return action;
-}
-
 QAction* MainWindow::action(const QString& objectName) const {
     return findChild<QAction*>(objectName);
 }
 
+void MainWindow::openDefaultScene() { m_document->newDefault(); }
+
 void MainWindow::createActions() {
     QStyle* s = style();
     // File.
-    QAction* a = makeAction(QStringLiteral("new"), tr("&New"), QKeySequence::New, tr("Start an empty scene"));
+    QAction* a = createAction(this, QStringLiteral("new"), tr("&New"), QKeySequence::New, tr("Start an empty scene"));
     a->setIcon(QIcon::fromTheme(QStringLiteral("document-new"), s->standardIcon(QStyle::SP_FileIcon)));
-    connect(a, &QAction::triggered, this, &MainWindow::newScene);
-    a = makeAction(QStringLiteral("open"), tr("&Open…"), QKeySequence::Open, tr("Open a scene file (Interplay or thesis format)"));
+    connect(a, &QAction::triggered, m_files, &DocumentManager::newScene);
+    a = createAction(this, QStringLiteral("open"), tr("&Open…"), QKeySequence::Open,
+                     tr("Open a scene file (Interplay or thesis format)"));
     a->setIcon(QIcon::fromTheme(QStringLiteral("document-open"), s->standardIcon(QStyle::SP_DialogOpenButton)));
-    connect(a, &QAction::triggered, this, [this] {
-        const QString dir = m_document->filePath().isEmpty() ? examplesDirectory() : QFileInfo(m_document->filePath()).absolutePath();
-        const QString path = m_prompts.chooseFile(FileChoice::Open, tr("Open Scene"), dir);
-        if (!path.isEmpty()) open(path);
-    });
-    a = makeAction(QStringLiteral("import"), tr("&Import Thesis Scene…"), {},
-                   tr("Open a scene of the 2018 thesis app; it is saved as a new Interplay scene"));
-    connect(a, &QAction::triggered, this, &MainWindow::importThesisScene);
-    a = makeAction(QStringLiteral("save"), tr("&Save"), QKeySequence::Save, tr("Save the scene"));
+    connect(a, &QAction::triggered, m_files, &DocumentManager::openChosenFile);
+    a = createAction(this, QStringLiteral("import"), tr("&Import Thesis Scene…"), {},
+                     tr("Open a scene of the 2018 thesis app; it is saved as a new Interplay scene"));
+    connect(a, &QAction::triggered, m_files, &DocumentManager::importThesisScene);
+    a = createAction(this, QStringLiteral("save"), tr("&Save"), QKeySequence::Save, tr("Save the scene"));
     a->setIcon(QIcon::fromTheme(QStringLiteral("document-save"), s->standardIcon(QStyle::SP_DialogSaveButton)));
-    connect(a, &QAction::triggered, this, &MainWindow::save);
-    a = makeAction(QStringLiteral("saveAs"), tr("Save &As…"), QKeySequence::SaveAs, tr("Save the scene to a new file"));
-    connect(a, &QAction::triggered, this, &MainWindow::saveAs);
-    a = makeAction(QStringLiteral("revert"), tr("Re&vert"), {}, tr("Drop unsaved changes and reload the file"));
-    connect(a, &QAction::triggered, this, &MainWindow::revert);
-    a = makeAction(QStringLiteral("quit"), tr("&Quit"), QKeySequence::Quit, tr("Quit Interplay"));
+    connect(a, &QAction::triggered, m_files, &DocumentManager::save);
+    a = createAction(this, QStringLiteral("saveAs"), tr("Save &As…"), QKeySequence::SaveAs,
+                     tr("Save the scene to a new file"));
+    connect(a, &QAction::triggered, m_files, &DocumentManager::saveAs);
+    a = createAction(this, QStringLiteral("revert"), tr("Re&vert"), {}, tr("Drop unsaved changes and reload the file"));
+    connect(a, &QAction::triggered, m_files, &DocumentManager::revert);
+    a = createAction(this, QStringLiteral("quit"), tr("&Quit"), QKeySequence::Quit, tr("Quit Interplay"));
     a->setMenuRole(QAction::QuitRole);
     connect(a, &QAction::triggered, this, &QWidget::close);
 
@@ -228,44 +180,22 @@ void MainWindow::createActions() {
     redo->setObjectName(QStringLiteral("redo"));
     redo->setShortcut(QKeySequence::Redo);
     redo->setIcon(QIcon::fromTheme(QStringLiteral("edit-redo"), s->standardIcon(QStyle::SP_ArrowForward)));
-    a = makeAction(QStringLiteral("delete"), tr("&Delete"), QKeySequence::Delete,
-                   tr("Delete the selected bodies (with their joints) and joints"));
-    a->setIcon(QIcon::fromTheme(QStringLiteral("edit-delete"), s->standardIcon(QStyle::SP_TrashIcon)));
-    connect(a, &QAction::triggered, this, &MainWindow::deleteSelection);
-    a = makeAction(QStringLiteral("duplicate"), tr("D&uplicate"), Qt::CTRL | Qt::Key_D, tr("Copy the selected bodies beside them"));
-    connect(a, &QAction::triggered, this, &MainWindow::duplicateSelection);
-    a = makeAction(QStringLiteral("selectAll"), tr("Select &All"), QKeySequence::SelectAll, tr("Select every body"));
-    connect(a, &QAction::triggered, this, [this] {
-        QList<int> all;
-        for (int i = 0; i < m_document->bodyCount(); ++i) all << i;
-        m_document->setSelectedBodies(all);
-    });
-    a = makeAction(QStringLiteral("applyPose"), tr("Apply Simulated &Pose"), {},
-                   tr("Make the bodies' current simulated positions, orientations and velocities the authored scene"));
+    // The scene's edit actions are SceneActions'; the window gives them its theme's icons.
+    m_sceneActions->deleteAction()->setIcon(
+        QIcon::fromTheme(QStringLiteral("edit-delete"), s->standardIcon(QStyle::SP_TrashIcon)));
+    a = createAction(
+        this, QStringLiteral("applyPose"), tr("Apply Simulated &Pose"), {},
+        tr("Make the bodies' current simulated positions, orientations and velocities the authored scene"));
     connect(a, &QAction::triggered, this, &MainWindow::applySimulatedPose);
 
-    // Add.
-    static const char* const kAddNames[] = {"addSphere", "addBox", "addCapsule", "addCylinder", "addHull"};
-    for (int type = 0; type < simcore::kShapeTypeCount; ++type) {
-        const auto shape = static_cast<simcore::ShapeType>(type);
-        a = makeAction(QLatin1String(kAddNames[type]), tr("Add %1").arg(shapeDisplayName(shape)), {},
-                       tr("Add a %1 above the point the camera looks at").arg(shapeDisplayName(shape).toLower()));
-        connect(a, &QAction::triggered, this, [this, type] { addBody(type); });
-    }
-
-    // Add Joint: one action per type; updateJointActions enables them and says why not.
-    for (const JointAction& joint : kJointActions) {
-        a = makeAction(QLatin1String(joint.objectName), tr("Add %1 Joint").arg(jointTypeDisplayName(joint.type)), {}, {});
-        connect(a, &QAction::triggered, this, [this, type = joint.type] { addJoint(static_cast<int>(type)); });
-    }
-
     // View.
-    a = makeAction(QStringLiteral("frameSelection"), tr("&Frame Selection"), Qt::Key_F,
-                   tr("Aim the camera at the selected bodies (F)"));
+    a = createAction(this, QStringLiteral("frameSelection"), tr("&Frame Selection"), Qt::Key_F,
+                     tr("Aim the camera at the selected bodies (F)"));
     connect(a, &QAction::triggered, m_viewport, &Viewport::frameSelection);
 
     // Simulation.
-    m_playAction = makeAction(QStringLiteral("play"), tr("&Play"), Qt::Key_Space, tr("Run or pause the simulation (Space)"));
+    m_playAction = createAction(this, QStringLiteral("play"), tr("&Play"), Qt::Key_Space,
+                                tr("Run or pause the simulation (Space)"));
     m_playAction->setIcon(s->standardIcon(QStyle::SP_MediaPlay));
     m_playAction->setCheckable(true);
     connect(m_playAction, &QAction::toggled, m_simulation, &SimulationController::setPlaying);
@@ -274,14 +204,16 @@ void MainWindow::createActions() {
         m_playAction->setText(playing ? tr("&Pause") : tr("&Play"));
         m_playAction->setIcon(style()->standardIcon(playing ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
     });
-    a = makeAction(QStringLiteral("step"), tr("&Step"), Qt::Key_Period, tr("Advance one time step and pause (.)"));
+    a = createAction(this, QStringLiteral("step"), tr("&Step"), Qt::Key_Period,
+                     tr("Advance one time step and pause (.)"));
     a->setIcon(s->standardIcon(QStyle::SP_MediaSeekForward));
     connect(a, &QAction::triggered, m_simulation, &SimulationController::stepOnce);
-    a = makeAction(QStringLiteral("reset"), tr("&Reset"), Qt::CTRL | Qt::Key_R, tr("Return to the authored scene (Ctrl+R)"));
+    a = createAction(this, QStringLiteral("reset"), tr("&Reset"), Qt::CTRL | Qt::Key_R,
+                     tr("Return to the authored scene (Ctrl+R)"));
     a->setIcon(s->standardIcon(QStyle::SP_MediaSkipBackward));
     connect(a, &QAction::triggered, m_simulation, &SimulationController::reset);
-    a = makeAction(QStringLiteral("throw"), tr("&Throw"), Qt::Key_T,
-                   tr("Throw a body from the camera along the view (T); it lives until Reset"));
+    a = createAction(this, QStringLiteral("throw"), tr("&Throw"), Qt::Key_T,
+                     tr("Throw a body from the camera along the view (T); it lives until Reset"));
     connect(a, &QAction::triggered, this, &MainWindow::throwBody);
     m_throwShapes = new QActionGroup(this);
     for (int type = 0; type < simcore::kShapeTypeCount; ++type) {
@@ -386,21 +318,23 @@ void MainWindow::createMenusAndToolBars() {
     edit->addAction(action(QStringLiteral("undo")));
     edit->addAction(action(QStringLiteral("redo")));
     edit->addSeparator();
-    edit->addAction(action(QStringLiteral("duplicate")));
-    edit->addAction(action(QStringLiteral("delete")));
-    edit->addAction(action(QStringLiteral("selectAll")));
+    edit->addAction(m_sceneActions->duplicateAction());
+    edit->addAction(m_sceneActions->deleteAction());
+    edit->addAction(m_sceneActions->selectAllAction());
     edit->addSeparator();
     edit->addAction(action(QStringLiteral("applyPose")));
 
+    // Menu order: the box first (the actions themselves are in ShapeType order).
+    using simcore::ShapeType;
+    const ShapeType addOrder[] = {ShapeType::Box, ShapeType::Sphere, ShapeType::Capsule, ShapeType::Cylinder,
+                                  ShapeType::ConvexHull};
     QMenu* add = menuBar()->addMenu(tr("&Add"));
-    for (const char* name : {"addBox", "addSphere", "addCapsule", "addCylinder", "addHull"}) {
-        add->addAction(action(QLatin1String(name)));
-    }
+    for (ShapeType type : addOrder) add->addAction(m_sceneActions->addBodyAction(type));
     add->addSeparator();
     QMenu* joints = add->addMenu(tr("Add &Joint"));
     joints->setObjectName(QStringLiteral("addJointMenu"));
     joints->setToolTipsVisible(true);  // a disabled entry says what selection it needs
-    for (const JointAction& joint : kJointActions) joints->addAction(action(QLatin1String(joint.objectName)));
+    joints->addActions(m_sceneActions->addJointActions());
 
     QMenu* simulation = menuBar()->addMenu(tr("&Simulation"));
     simulation->addAction(m_playAction);
@@ -440,9 +374,7 @@ void MainWindow::createMenusAndToolBars() {
     QToolBar* addBar = addToolBar(tr("Add"));
     addBar->setObjectName(QStringLiteral("addToolBar"));
     addBar->setToolButtonStyle(Qt::ToolButtonTextOnly);
-    for (const char* name : {"addBox", "addSphere", "addCapsule", "addCylinder", "addHull"}) {
-        addBar->addAction(action(QLatin1String(name)));
-    }
+    for (ShapeType type : addOrder) addBar->addAction(m_sceneActions->addBodyAction(type));
     auto* jointButton = new QToolButton;
     jointButton->setText(tr("Joint"));
     jointButton->setToolTip(tr("Add a joint between the selected bodies, or from one body to the world"));
@@ -450,8 +382,8 @@ void MainWindow::createMenusAndToolBars() {
     jointButton->setPopupMode(QToolButton::InstantPopup);
     addBar->addWidget(jointButton);
     addBar->addSeparator();
-    addBar->addAction(action(QStringLiteral("duplicate")));
-    addBar->addAction(action(QStringLiteral("delete")));
+    addBar->addAction(m_sceneActions->duplicateAction());
+    addBar->addAction(m_sceneActions->deleteAction());
 }
 
 void MainWindow::createStatusBar() {
@@ -472,115 +404,11 @@ void MainWindow::createStatusBar() {
     fpsTimer->start(500);
 }
 
-// ---- Files ----------------------------------------------------------------------------------------
-
-bool MainWindow::openFile(const QString& path, QString* error) {
-    if (!m_document->load(path, error)) return false;
-    addRecentFile(path);
-    if (!m_document->loadWarnings().isEmpty()) {
-        statusBar()->showMessage(tr("Opened with %n warning(s): %1", nullptr, static_cast<int>(m_document->loadWarnings().size()))
-                                     .arg(m_document->loadWarnings().first()),
-                                 10000);
-    }
-    return true;
-}
-
-void MainWindow::openDefaultScene() {
-    m_document->newDefault();
-}
-
-bool MainWindow::newScene() {
-    if (!maybeSave()) return false;
-    m_document->newEmpty();
-    return true;
-}
-
-bool MainWindow::open(const QString& path) {
-    if (!maybeSave()) return false;
-    QString error;
-    if (!openFile(path, &error)) {
-        m_prompts.error(tr("Open Scene"), tr("The scene \"%1\" could not be opened.").arg(QFileInfo(path).fileName()), error);
-        return false;
-    }
-    return true;
-}
-
-bool MainWindow::save() {
-    if (m_document->filePath().isEmpty()) return saveAs();
-    QString error;
-    if (!m_document->save(m_document->filePath(), &error)) {
-        m_prompts.error(tr("Save Scene"), tr("The scene was not saved. The file on disk is unchanged."), error);
-        return false;
-    }
-    removeRecoveryFile();
-    statusBar()->showMessage(tr("Saved %1").arg(m_document->filePath()), 4000);
-    return true;
-}
-
-bool MainWindow::saveAs() {
-    const QString dir = m_document->filePath().isEmpty() ? QDir::homePath() : m_document->filePath();
-    QString path = m_prompts.chooseFile(FileChoice::Save, tr("Save Scene As"), dir);
-    if (path.isEmpty()) return false;
-    if (QFileInfo(path).suffix().isEmpty()) path += QStringLiteral(".json");
-    QString error;
-    if (!m_document->save(path, &error)) {
-        m_prompts.error(tr("Save Scene"), tr("The scene was not saved. The file on disk is unchanged."), error);
-        return false;
-    }
-    removeRecoveryFile();
-    addRecentFile(path);
-    return true;
-}
-
-bool MainWindow::revert() {
-    if (m_document->filePath().isEmpty()) return false;
-    QString error;
-    if (!m_document->revert(&error)) {
-        m_prompts.error(tr("Revert"), tr("The file could not be read again; the scene is as it was."), error);
-        return false;
-    }
-    removeRecoveryFile();
-    return true;
-}
-
-bool MainWindow::maybeSave() {
-    if (!m_document->isModified()) return true;
-    switch (m_prompts.unsavedChanges(m_document->displayName())) {
-    case UnsavedChoice::Save: return save();
-    case UnsavedChoice::Discard: return true;
-    case UnsavedChoice::Cancel: return false;
-    }
-    return false;
-}
-
-void MainWindow::importThesisScene() {
-    const QString path = m_prompts.chooseFile(FileChoice::Open, tr("Import Thesis Scene"),
-                                              QDir(examplesDirectory()).filePath(QStringLiteral("thesis")));
-    if (!path.isEmpty()) open(path);  // the document recognises the format and imports it
-}
-
-QStringList MainWindow::recentFiles() const {
-    return QSettings().value(kRecentFilesKey).toStringList();
-}
-
-void MainWindow::clearRecentFiles() {
-    QSettings().remove(kRecentFilesKey);
-    rebuildRecentMenu();
-}
-
-void MainWindow::addRecentFile(const QString& path) {
-    const QString absolute = QFileInfo(path).absoluteFilePath();
-    QStringList files = recentFiles();
-    files.removeAll(absolute);
-    files.prepend(absolute);
-    while (files.size() > kMaxRecentFiles) files.removeLast();
-    QSettings().setValue(kRecentFilesKey, files);
-    rebuildRecentMenu();
-}
+// ---- File menus ----------------------------------------------------------------------------------
 
 void MainWindow::rebuildRecentMenu() {
     m_recentMenu->clear();
-    const QStringList files = recentFiles();
+    const QStringList files = m_files->recentFiles();
     for (int i = 0; i < files.size(); ++i) {
         const QString& path = files[i];
         // &1..&9 as keyboard accelerators, as most editors do.
@@ -588,28 +416,22 @@ void MainWindow::rebuildRecentMenu() {
                                                    : QFileInfo(path).fileName());
         a->setStatusTip(path);
         a->setToolTip(path);
-        connect(a, &QAction::triggered, this, [this, path] { open(path); });
+        connect(a, &QAction::triggered, m_files, [this, path] { m_files->open(path); });
     }
     if (!files.isEmpty()) m_recentMenu->addSeparator();
-    QAction* clear = m_recentMenu->addAction(tr("&Clear Menu"), this, &MainWindow::clearRecentFiles);
+    QAction* clear = m_recentMenu->addAction(tr("&Clear Menu"), m_files, &DocumentManager::clearRecentFiles);
     clear->setObjectName(QStringLiteral("clearRecent"));
     clear->setEnabled(!files.isEmpty());
 }
 
-QString MainWindow::examplesDirectory() {
-    // Installed: scenes/ beside the program. From a build tree: the repository's scenes/.
-    const QString beside = QDir(QCoreApplication::applicationDirPath()).filePath(QStringLiteral("scenes"));
-    if (QFileInfo(beside).isDir()) return beside;
-    return QStringLiteral(INTERPLAY_SCENES_DIR);
-}
-
 void MainWindow::rebuildExamplesMenu() {
     m_examplesMenu->clear();
-    const QDir dir(examplesDirectory());
+    const QDir dir(DocumentManager::examplesDirectory());
     const auto addScenes = [this](QMenu* menu, const QDir& folder) {
         for (const QFileInfo& info : folder.entryInfoList({QStringLiteral("*.json")}, QDir::Files, QDir::Name)) {
             const QString path = info.absoluteFilePath();
-            connect(menu->addAction(info.completeBaseName()), &QAction::triggered, this, [this, path] { open(path); });
+            connect(menu->addAction(info.completeBaseName()), &QAction::triggered, m_files,
+                    [this, path] { m_files->open(path); });
         }
     };
     addScenes(m_examplesMenu, dir);
@@ -617,169 +439,7 @@ void MainWindow::rebuildExamplesMenu() {
     m_examplesMenu->setEnabled(!m_examplesMenu->isEmpty());
 }
 
-// ---- Watching the file, autosave and recovery -------------------------------------------------------
-
-void MainWindow::watchDocumentFile() {
-    if (!m_watcher->files().isEmpty()) m_watcher->removePaths(m_watcher->files());
-    const QString path = m_document->filePath();
-    m_expectedFileStamp = path.isEmpty() ? QString() : fileStamp(path);
-    // Saving replaces the file (write and rename), which drops it from the watch: add it again.
-    if (!path.isEmpty() && QFileInfo::exists(path)) m_watcher->addPath(path);
-}
-
-void MainWindow::documentFileChanged(const QString& path) {
-    if (path != m_document->filePath()) return;
-    const QString stamp = fileStamp(path);
-    if (stamp.isEmpty() || stamp == m_expectedFileStamp) {
-        // Deleted (nothing to reload; saving will recreate it), or our own write.
-        if (!stamp.isEmpty()) m_watcher->addPath(path);
-        return;
-    }
-    m_expectedFileStamp = stamp;  // ask once per outside change
-    m_watcher->addPath(path);
-    const QString question =
-        m_document->isModified()
-            ? tr("\"%1\" was changed by another program. Reload it and lose your unsaved changes?").arg(QFileInfo(path).fileName())
-            : tr("\"%1\" was changed by another program. Reload it?").arg(QFileInfo(path).fileName());
-    if (m_prompts.confirm(tr("File Changed"), question)) revert();
-}
-
-QString MainWindow::recoveryFilePath() {
-    return QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation))
-        .filePath(QStringLiteral("recovery/autosave.json"));
-}
-
-void MainWindow::setAutosaveInterval(int milliseconds) {
-    m_autosaveTimer->start(milliseconds);
-}
-
-void MainWindow::autosaveNow() {
-    if (!m_document->isModified()) return;
-    const QString path = recoveryFilePath();
-    QDir().mkpath(QFileInfo(path).absolutePath());
-    const std::string text = simcore::serializeScene(m_document->scene());
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly) || file.write(text.data(), static_cast<qint64>(text.size())) < 0 || !file.commit()) {
-        statusBar()->showMessage(tr("Autosave failed: %1").arg(file.errorString()), 8000);
-        return;
-    }
-    // Which file the recovered scene belongs to, so Save after recovery goes to the right place.
-    QSaveFile origin(recoveryMetaPath());
-    if (origin.open(QIODevice::WriteOnly)) {
-        origin.write(m_document->filePath().toUtf8());
-        origin.commit();
-    }
-}
-
-void MainWindow::removeRecoveryFile() {
-    QFile::remove(recoveryFilePath());
-    QFile::remove(recoveryMetaPath());
-}
-
-bool MainWindow::offerRecovery() {
-    const QString path = recoveryFilePath();
-    if (!QFileInfo::exists(path)) return false;
-    QFile originFile(recoveryMetaPath());
-    const QString origin = originFile.open(QIODevice::ReadOnly) ? QString::fromUtf8(originFile.readAll()) : QString();
-    const QString name = origin.isEmpty() ? tr("an untitled scene") : QStringLiteral("\"%1\"").arg(QFileInfo(origin).fileName());
-    if (!m_prompts.confirm(tr("Recover Scene"),
-                           tr("Interplay did not close normally. Recover the unsaved changes to %1?").arg(name))) {
-        removeRecoveryFile();
-        return false;
-    }
-    const simcore::SceneLoadResult result = simcore::loadSceneFile(std::filesystem::path(QFile::encodeName(path).toStdString()));
-    if (!result.ok()) {
-        QStringList errors;
-        for (const simcore::Diagnostic& d : result.diagnostics) errors << QString::fromStdString(d.toString());
-        m_prompts.error(tr("Recover Scene"), tr("The recovery file could not be read."), errors.join(u'\n'));
-        return false;
-    }
-    m_document->restoreRecovered(*result.scene, origin);
-    return true;
-}
-
 // ---- Editing --------------------------------------------------------------------------------------
-
-void MainWindow::addBody(int shapeType) {
-    const auto type = static_cast<simcore::ShapeType>(shapeType);
-    const simcore::Shape shape = templateShape(type);
-    const simcore::Aabb bounds = simcore::localBounds(shape);
-    const simcore::Vec3 position = m_viewport->placementPoint(0.5f * (bounds.max.y - bounds.min.y));
-    simcore::SceneBody body = templateBody(type, m_document->uniqueBodyName(shapeDisplayName(type)), position);
-    const QString name = QString::fromStdString(body.body.name);
-    m_document->undoStack()->push(
-        new AddBodies(m_document, tr("Add %1").arg(name), {m_document->bodyCount()}, {std::move(body)}));
-}
-
-void MainWindow::addJoint(int jointType) {
-    const QList<int>& bodies = m_document->selectedBodies();
-    if (bodies.isEmpty() || bodies.size() > 2) return;
-    const auto type = static_cast<simcore::JointType>(jointType);
-    const std::optional<std::size_t> bodyB =
-        bodies.size() == 2 ? std::optional<std::size_t>(static_cast<std::size_t>(bodies[1])) : std::nullopt;
-    simcore::SceneJoint joint = templateJoint(type, m_document->uniqueJointName(tr("Joint")), m_document->scene().bodies,
-                                              static_cast<std::size_t>(bodies[0]), bodyB);
-    // Two bodies at one point leave a distance joint no length, for instance.
-    if (const QString problem = m_document->jointProblem(joint); !problem.isEmpty()) {
-        statusBar()->showMessage(tr("No joint added: %1").arg(problem), 8000);
-        return;
-    }
-    m_document->undoStack()->push(new AddJoint(m_document, tr("Add %1 Joint").arg(jointTypeDisplayName(type)),
-                                               m_document->jointCount(), std::move(joint)));
-}
-
-void MainWindow::updateJointActions() {
-    const QList<int>& bodies = m_document->selectedBodies();
-    const bool anyDynamic = std::any_of(bodies.begin(), bodies.end(), [this](int i) {
-        return m_document->body(i).body.motion == simcore::MotionType::Dynamic;
-    });
-    QString why;  // what the selection lacks, or empty when it fits
-    if (bodies.isEmpty() || bodies.size() > 2) {
-        why = tr("Select two bodies to join them, or one body to hold it to the world.");
-    } else if (!anyDynamic) {
-        why = tr("A joint needs a dynamic body to act on; the selected bodies do not move.");
-    }
-    for (const JointAction& joint : kJointActions) {
-        QAction* a = action(QLatin1String(joint.objectName));
-        const QString type = jointTypeDisplayName(joint.type).toLower();
-        QString tip = why;
-        if (why.isEmpty() && bodies.size() == 2) {
-            tip = tr("Join %1 and %2 with a %3 joint").arg(m_document->bodyName(bodies[0]), m_document->bodyName(bodies[1]), type);
-        } else if (why.isEmpty()) {
-            tip = tr("Hold %1 to the world with a %2 joint").arg(m_document->bodyName(bodies[0]), type);
-        }
-        a->setEnabled(why.isEmpty());
-        a->setStatusTip(tip);
-        a->setToolTip(tip);
-    }
-}
-
-void MainWindow::deleteSelection() {
-    if (m_document->selectedBodies().isEmpty() && m_document->selectedJoints().isEmpty()) return;
-    m_document->undoStack()->push(new RemoveBodies(m_document, m_document->selectedBodies(), m_document->selectedJoints()));
-}
-
-void MainWindow::duplicateSelection() {
-    const QList<int> selection = m_document->selectedBodies();
-    if (selection.isEmpty()) return;
-    static const QRegularExpression trailingNumber(QStringLiteral("\\s*\\d+$"));
-    std::vector<simcore::SceneBody> copies;
-    QList<int> indices;
-    QStringList newNames;
-    for (int index : selection) {
-        simcore::SceneBody copy = m_document->body(index);
-        // "Box 3" copies to the next free "Box N"; the copy sits beside the original, not in it.
-        const QString base = QString::fromStdString(copy.body.name).remove(trailingNumber);
-        newNames << m_document->uniqueBodyName(base.isEmpty() ? tr("Body") : base, newNames);
-        copy.body.name = newNames.last().toStdString();
-        const simcore::Aabb bounds = simcore::worldBounds(copy.body.shape, {copy.body.position, copy.body.orientation});
-        copy.body.position.x += bounds.max.x - bounds.min.x + 0.1f;
-        indices << m_document->bodyCount() + static_cast<int>(copies.size());
-        copies.push_back(std::move(copy));
-    }
-    m_document->undoStack()->push(new AddBodies(m_document, tr("Duplicate %1").arg(bodiesLabel(*m_document, selection)),
-                                                indices, std::move(copies)));
-}
 
 void MainWindow::applySimulatedPose() {
     QString error;
@@ -806,11 +466,9 @@ void MainWindow::throwBody() {
 // ---- Keeping things in step ------------------------------------------------------------------------
 
 void MainWindow::documentSceneReplaced() {
-    // A clean scene (new, opened, reverted) makes any earlier autosave stale.
-    if (!m_document->isModified()) removeRecoveryFile();
     QString error;
     if (!m_simulation->setScene(m_document->scene(), &error)) {
-        m_prompts.error(tr("Scene"), tr("The scene cannot be simulated."), error);
+        m_files->prompts().error(tr("Scene"), tr("The scene cannot be simulated."), error);
         return;
     }
     m_viewport->frameScene();
@@ -862,18 +520,18 @@ void MainWindow::updateStatus() {
 
 void MainWindow::showSimulationError(const QString& message) {
     statusBar()->showMessage(message, 10000);
-    m_prompts.error(tr("Simulation"), message, QString());
+    m_files->prompts().error(tr("Simulation"), message, QString());
 }
 
 // ---- Window events ----------------------------------------------------------------------------------
 
 void MainWindow::closeEvent(QCloseEvent* event) {
-    if (!maybeSave()) {
+    if (!m_files->maybeSave()) {
         event->ignore();
         return;
     }
     saveLayout();
-    removeRecoveryFile();  // a normal exit leaves nothing to recover
+    m_files->removeRecoveryFile();  // a normal exit leaves nothing to recover
     event->accept();
 }
 
@@ -891,7 +549,7 @@ void MainWindow::dropEvent(QDropEvent* event) {
     event->acceptProposedAction();
     // Opening asks questions (unsaved changes); not while the drag source waits for the drop.
     const QString path = urls.first().toLocalFile();
-    QTimer::singleShot(0, this, [this, path] { open(path); });
+    QTimer::singleShot(0, m_files, [this, path] { m_files->open(path); });
 }
 
 void MainWindow::restoreLayout() {

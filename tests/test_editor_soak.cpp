@@ -1,8 +1,8 @@
 // The editor's soak: a random mixed scene (every shape and joint type) plays for many steps while
-// random edits go through the document's undo commands (add, delete, duplicate, property changes,
-// drags merged into one entry, settings and slider runs, reorder, Apply Simulated Pose, joints
-// added, changed and deleted), with random undo and redo runs, throws and grabs in the running
-// world, and saves. The document and the controller are wired as the window wires them. After every
+// random edits go through the editor's own Add, Duplicate and Delete actions (SceneActions) and the
+// document's undo commands (random bodies, property changes, drags merged into one entry, settings
+// and slider runs, reorder, Apply Simulated Pose, joints added, changed and deleted), with random
+// undo and redo runs, throws and grabs in the running world, and saves. The document and the controller are wired as the window wires them. After every
 // operation the document and the simulation must hold together: every index and id they expose is
 // valid, no value is non-finite, the scene saves and loads back to the same bytes, the simulation
 // plays what the document holds, and every history position gives back exactly the scene it had.
@@ -19,12 +19,14 @@
 #include "support/editor_session.h"
 
 #include "app/document/body_templates.h"
+#include "app/document/scene_actions.h"
 #include "app/document/scene_tree_model.h"
 #include "app/document/undo_commands.h"
 
 #include "simcore/io/scene_io.h"
 #include "simcore/shapes/convex_hull.h"
 
+#include <QAction>
 #include <QDir>
 #include <QElapsedTimer>
 #include <QFile>
@@ -231,7 +233,10 @@ struct SoakCounts {
 
 class Soak {
 public:
-    Soak(std::uint64_t seed, QString directory) : m_random(seed), m_directory(std::move(directory)) {}
+    Soak(std::uint64_t seed, QString directory) : m_random(seed), m_directory(std::move(directory)) {
+        // Where the viewport would place an added body: somewhere along x, 2 m up.
+        m_actions.setPlacement([this](float) { return Vec3(m_random.uniform(-5.0f, 5.0f), 2.0f, 0.0f); });
+    }
 
     // Loads the starting scene; returns an error or empty.
     QString start() {
@@ -369,10 +374,16 @@ private:
     // Pushes an edit and keeps m_expected, the scene at every history index, in step with the stack
     // (the new top's scene is recorded by the next check, which serialises the scene anyway).
     void push(QUndoCommand* command) {
+        note(QStringLiteral("push \"%1\"").arg(command->text()));
+        recordPush([&] { document().undoStack()->push(command); });
+    }
+
+    // The same for an editor action that pushes exactly one command.
+    template <typename PushOne>
+    void recordPush(PushOne pushOne) {
         QUndoStack* stack = document().undoStack();
         const int before = stack->index();
-        note(QStringLiteral("push \"%1\"").arg(command->text()));
-        stack->push(command);
+        pushOne();
         ++m_counts.edits;
         const int count = stack->count();
         m_expected.resize(static_cast<std::size_t>(count) + 1);  // entries past the old index are gone
@@ -392,7 +403,10 @@ private:
         int roll = m_random.integer(0, 99 + addWeight + deleteWeight);
         if ((roll -= addWeight) < 0) return addBody();
         if ((roll -= deleteWeight) < 0) {
-            if (!selection.isEmpty()) push(new RemoveBodies(&document(), selection));
+            if (!selection.isEmpty()) {  // Edit > Delete: the bodies with their joints
+                note(QStringLiteral("delete %1 bodies").arg(selection.size()));
+                recordPush([this] { m_actions.deleteAction()->trigger(); });
+            }
             return;
         }
         if (roll < 8) return duplicate(selection);
@@ -480,31 +494,21 @@ private:
 
     void addBody() {
         const int n = document().bodyCount();
-        if (m_random.chance(0.5)) {  // as MainWindow::addBody: a template at the end
+        if (m_random.chance(0.5)) {  // Add > Box, Sphere, ...: a template at the end
             const auto type = static_cast<ShapeType>(m_random.integer(0, kShapeTypeCount - 1));
-            const QString name = document().uniqueBodyName(interplay::shapeDisplayName(type));
-            push(new AddBodies(&document(), "Add " + name, {n},
-                               {interplay::templateBody(type, name, {m_random.uniform(-5.0f, 5.0f), 2.0f, 0.0f})}));
+            note(QStringLiteral("add a %1").arg(interplay::shapeDisplayName(type)));
+            recordPush([this, type] { m_actions.addBodyAction(type)->trigger(); });
             return;
         }
         const QString name = document().uniqueBodyName(QStringLiteral("Random"));
         push(new AddBodies(&document(), "Add " + name, {m_random.integer(0, n)}, {randomBody(m_random, name)}));
     }
 
-    void duplicate(const QList<int>& selection) {  // copies beside the originals, at the end
-        if (selection.isEmpty()) return;
-        std::vector<SceneBody> copies;
-        QList<int> indices;
-        QStringList names;
-        for (int index : selection) {
-            SceneBody copy = document().body(index);
-            names << document().uniqueBodyName(QStringLiteral("Copy"), names);
-            copy.body.name = names.last().toStdString();
-            copy.body.position.x += 1.5f;
-            indices << document().bodyCount() + static_cast<int>(copies.size());
-            copies.push_back(std::move(copy));
-        }
-        push(new AddBodies(&document(), QStringLiteral("Duplicate"), indices, std::move(copies)));
+    // Edit > Duplicate on the selection, as the window runs it: copies beside the originals.
+    void duplicate(const QList<int>& selection) {
+        if (selection.isEmpty()) return;  // the action would push nothing
+        note(QStringLiteral("duplicate %1 bodies").arg(selection.size()));
+        recordPush([this] { m_actions.duplicateAction()->trigger(); });
     }
 
     void changeProperty(const QList<int>& selection) {
@@ -736,6 +740,7 @@ private:
     Random m_random;
     QString m_directory;
     test_support::EditorSession m_session;
+    interplay::SceneActions m_actions{&m_session.document};  // the window's Add, Duplicate, Delete
     SoakCounts m_counts;
     std::vector<std::string> m_expected;  // the scene at each history index
     std::string m_savedText;              // the scene when the document was last clean
@@ -1044,5 +1049,6 @@ void TestEditorSoak::oversizedFileIsRefusedUnread() {
              qPrintable(QStringLiteral("the document read %1 bytes of a refused file").arg(*readAfter - *readBefore)));
 }
 
-QTEST_GUILESS_MAIN(TestEditorSoak)
+// QActions need a QGuiApplication (offscreen under ctest).
+QTEST_MAIN(TestEditorSoak)
 #include "test_editor_soak.moc"

@@ -8,6 +8,7 @@
 // highlighted and deleted with their bodies; the toolbar's edit actions; the QML settings panel
 // loads and its controls change the running world; every demo scene renders.
 
+#include "app/document/document_manager.h"
 #include "app/document/scene_document.h"
 #include "app/document/scene_tree_model.h"
 #include "app/document/undo_commands.h"
@@ -49,6 +50,7 @@
 #include <memory>
 #include <set>
 
+using interplay::DocumentManager;
 using interplay::MainWindow;
 
 namespace {
@@ -67,7 +69,7 @@ int distinctColors(const QImage& image) {
 
 // Records what the window asked, and answers as told.
 struct ScriptedPrompts {
-    MainWindow::UnsavedChoice unsavedAnswer = MainWindow::UnsavedChoice::Cancel;
+    DocumentManager::UnsavedChoice unsavedAnswer = DocumentManager::UnsavedChoice::Cancel;
     bool confirmAnswer = true;
     QString fileAnswer;
     int unsavedAsked = 0;
@@ -75,7 +77,7 @@ struct ScriptedPrompts {
     QStringList errors;
 
     void install(MainWindow& window) {
-        auto& p = window.prompts();
+        auto& p = window.documentManager()->prompts();
         p.unsavedChanges = [this](const QString&) {
             ++unsavedAsked;
             return unsavedAnswer;
@@ -85,7 +87,7 @@ struct ScriptedPrompts {
             return confirmAnswer;
         };
         p.error = [this](const QString&, const QString& text, const QString& details) { errors << text + '\n' + details; };
-        p.chooseFile = [this](MainWindow::FileChoice, const QString&, const QString&) { return fileAnswer; };
+        p.chooseFile = [this](DocumentManager::FileChoice, const QString&, const QString&) { return fileAnswer; };
     }
 };
 
@@ -136,6 +138,7 @@ class TestMainWindow : public QObject {
 
 private slots:
     void initTestCase();
+    void cleanupTestCase();
     void init();
     void cleanup();
 
@@ -160,6 +163,7 @@ private slots:
     void grabbingWhilePlayingPullsTheBody();
     void applySimulatedPoseIsUndoable();
     void addDuplicateDeleteActions();
+    void shortcutsReachTheSceneActionsAndFileCommands();
     void treeSelectionFollowsTheDocument();
     void throwSpawnsIntoTheRunningWorldOnly();
     void editsWhilePausedKeepTheRun();
@@ -184,16 +188,22 @@ private:
 };
 
 void TestMainWindow::initTestCase() {
-    // Settings, recent files and recovery files go to a test location, not the user's.
+    // Settings, recent files and recovery files go to a test location, not the user's, and one of
+    // this process's own: two checkouts testing at once on one machine must not share them.
     QStandardPaths::setTestModeEnabled(true);
     QCoreApplication::setOrganizationName("InterplayTests");
-    QCoreApplication::setApplicationName("test_main_window");
+    QCoreApplication::setApplicationName(QString("test_main_window-%1").arg(QCoreApplication::applicationPid()));
     QVERIFY(m_dir.isValid());
+}
+
+void TestMainWindow::cleanupTestCase() {
+    QFile::remove(QSettings().fileName());
+    QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation)).removeRecursively();
 }
 
 void TestMainWindow::init() {
     QSettings().clear();
-    QFile::remove(MainWindow::recoveryFilePath());
+    QFile::remove(DocumentManager::recoveryFilePath());
     m_prompts = ScriptedPrompts{};
     m_window = std::make_unique<MainWindow>();
     m_prompts.install(*m_window);
@@ -251,9 +261,9 @@ void TestMainWindow::docksHaveNamesAndViewMenuEntries() {
 void TestMainWindow::unsavedChangesPrompt_data() {
     QTest::addColumn<int>("answer");
     QTest::addColumn<bool>("proceeds");
-    QTest::newRow("cancel") << int(MainWindow::UnsavedChoice::Cancel) << false;
-    QTest::newRow("discard") << int(MainWindow::UnsavedChoice::Discard) << true;
-    QTest::newRow("save") << int(MainWindow::UnsavedChoice::Save) << true;
+    QTest::newRow("cancel") << int(DocumentManager::UnsavedChoice::Cancel) << false;
+    QTest::newRow("discard") << int(DocumentManager::UnsavedChoice::Discard) << true;
+    QTest::newRow("save") << int(DocumentManager::UnsavedChoice::Save) << true;
 }
 
 void TestMainWindow::unsavedChangesPrompt() {
@@ -263,15 +273,15 @@ void TestMainWindow::unsavedChangesPrompt() {
     m_prompts.fileAnswer = path;  // Save on an untitled scene asks where
     m_window->action("addSphere")->trigger();
     const std::string edited = sceneText(m_window->document()->scene());
-    m_prompts.unsavedAnswer = static_cast<MainWindow::UnsavedChoice>(answer);
+    m_prompts.unsavedAnswer = static_cast<DocumentManager::UnsavedChoice>(answer);
 
     // New, Open and closing all ask.
-    QCOMPARE(m_window->newScene(), proceeds);
+    QCOMPARE(m_window->documentManager()->newScene(), proceeds);
     QCOMPARE(m_prompts.unsavedAsked, 1);
     if (!proceeds) {
         QCOMPARE(sceneText(m_window->document()->scene()), edited);
         QVERIFY(m_window->document()->isModified());
-        QVERIFY(!m_window->open(INTERPLAY_SOURCE_DIR "/scenes/incline.json"));
+        QVERIFY(!m_window->documentManager()->open(INTERPLAY_SOURCE_DIR "/scenes/incline.json"));
         QCOMPARE(m_prompts.unsavedAsked, 2);
         QVERIFY(!m_window->close());
         QCOMPARE(m_prompts.unsavedAsked, 3);
@@ -280,7 +290,7 @@ void TestMainWindow::unsavedChangesPrompt() {
     }
     QVERIFY(!m_window->document()->isModified());
     QCOMPARE(m_window->document()->bodyCount(), 1);  // New: the ground only
-    if (answer == int(MainWindow::UnsavedChoice::Save)) {
+    if (answer == int(DocumentManager::UnsavedChoice::Save)) {
         QVERIFY(QFile::exists(path));
         interplay::SceneDocument saved;
         QVERIFY(saved.load(path));
@@ -289,7 +299,7 @@ void TestMainWindow::unsavedChangesPrompt() {
         QVERIFY(!QFile::exists(path));
     }
     // Nothing to lose: no question.
-    QVERIFY(m_window->open(INTERPLAY_SOURCE_DIR "/scenes/incline.json"));
+    QVERIFY(m_window->documentManager()->open(INTERPLAY_SOURCE_DIR "/scenes/incline.json"));
     QCOMPARE(m_prompts.unsavedAsked, 1);
 }
 
@@ -300,7 +310,7 @@ void TestMainWindow::openErrorIsReportedAndDocumentKept() {
     file.write(R"({"format": "interplay.scene", "version": 1, "bodies": [{"shape": {"type": "box", "halfExtents": [1, "x", 1]}}]})");
     file.close();
     const std::string before = sceneText(m_window->document()->scene());
-    QVERIFY(!m_window->open(path));
+    QVERIFY(!m_window->documentManager()->open(path));
     QCOMPARE(m_prompts.errors.size(), 1);
     QVERIFY2(m_prompts.errors.first().contains("bad.json") && m_prompts.errors.first().contains("/bodies/0/shape/halfExtents"),
              qPrintable(m_prompts.errors.first()));
@@ -312,7 +322,7 @@ void TestMainWindow::saveAsOpenRevertRoundTrip() {
     const QString path = m_dir.filePath("roundtrip");
     m_prompts.fileAnswer = path;
     m_window->action("addCapsule")->trigger();
-    QVERIFY(m_window->saveAs());
+    QVERIFY(m_window->documentManager()->saveAs());
     QCOMPARE(m_window->document()->filePath(), path + ".json");  // the extension is added
     QCOMPARE(m_window->windowTitle(), QString("[*]roundtrip.json — Interplay"));
     QVERIFY(!m_window->isWindowModified());
@@ -320,12 +330,12 @@ void TestMainWindow::saveAsOpenRevertRoundTrip() {
 
     m_window->action("addBox")->trigger();
     QVERIFY(m_window->isWindowModified());
-    QVERIFY(m_window->revert());
+    QVERIFY(m_window->documentManager()->revert());
     QCOMPARE(sceneText(m_window->document()->scene()), saved);
     QVERIFY(!m_window->isWindowModified());
 
-    QVERIFY(m_window->newScene());
-    QVERIFY(m_window->open(path + ".json"));
+    QVERIFY(m_window->documentManager()->newScene());
+    QVERIFY(m_window->documentManager()->open(path + ".json"));
     QCOMPARE(sceneText(m_window->document()->scene()), saved);
     // Ctrl+S on a file with a path writes without asking.
     m_prompts.fileAnswer.clear();
@@ -343,7 +353,7 @@ void TestMainWindow::failingSaveLeavesOldFileAndTellsTheUser() {
     QVERIFY(before.open(QIODevice::ReadOnly));
     const QByteArray original = before.readAll();
     m_window->action("addBox")->trigger();
-    QVERIFY(!m_window->saveAs());
+    QVERIFY(!m_window->documentManager()->saveAs());
     QCOMPARE(m_prompts.errors.size(), 1);
     QVERIFY2(m_prompts.errors.first().contains("unchanged"), qPrintable(m_prompts.errors.first()));
     QFile after("/proc/version");
@@ -354,24 +364,25 @@ void TestMainWindow::failingSaveLeavesOldFileAndTellsTheUser() {
 
 void TestMainWindow::recentFilesAreAbsoluteDeduplicatedAndCapped() {
     QDir::setCurrent(INTERPLAY_SOURCE_DIR);
-    QVERIFY(m_window->open("scenes/incline.json"));  // relative: stored absolute
-    QVERIFY(m_window->open(INTERPLAY_SOURCE_DIR "/scenes/tumbling.json"));
-    QVERIFY(m_window->open(INTERPLAY_SOURCE_DIR "/scenes/incline.json"));
-    const QStringList recent = m_window->recentFiles();
+    QVERIFY(m_window->documentManager()->open("scenes/incline.json"));  // relative: stored absolute
+    QVERIFY(m_window->documentManager()->open(INTERPLAY_SOURCE_DIR "/scenes/tumbling.json"));
+    QVERIFY(m_window->documentManager()->open(INTERPLAY_SOURCE_DIR "/scenes/incline.json"));
+    const QStringList recent = m_window->documentManager()->recentFiles();
     QCOMPARE(recent.size(), 2);
     QCOMPARE(recent.first(), QString(INTERPLAY_SOURCE_DIR "/scenes/incline.json"));
     for (const QString& path : recent) QVERIFY(QDir::isAbsolutePath(path));
 
     const QStringList scenes = QDir(INTERPLAY_SOURCE_DIR "/scenes").entryList({"*.json"}, QDir::Files);
-    QVERIFY(scenes.size() > MainWindow::kMaxRecentFiles);
-    for (const QString& name : scenes) QVERIFY(m_window->open(INTERPLAY_SOURCE_DIR "/scenes/" + name));
-    QCOMPARE(m_window->recentFiles().size(), MainWindow::kMaxRecentFiles);
+    QVERIFY(scenes.size() > DocumentManager::kMaxRecentFiles);
+    for (const QString& name : scenes)
+        QVERIFY(m_window->documentManager()->open(INTERPLAY_SOURCE_DIR "/scenes/" + name));
+    QCOMPARE(m_window->documentManager()->recentFiles().size(), DocumentManager::kMaxRecentFiles);
 
     auto* menu = m_window->findChild<QMenu*>("recentMenu");
     emit menu->aboutToShow();
-    QCOMPARE(menu->actions().size(), MainWindow::kMaxRecentFiles + 2);  // files, separator, Clear
+    QCOMPARE(menu->actions().size(), DocumentManager::kMaxRecentFiles + 2);  // files, separator, Clear
     m_window->findChild<QAction*>("clearRecent")->trigger();
-    QVERIFY(m_window->recentFiles().isEmpty());
+    QVERIFY(m_window->documentManager()->recentFiles().isEmpty());
     QVERIFY(!m_window->findChild<QAction*>("clearRecent")->isEnabled());
 
     // The Examples menu lists the demo scenes.
@@ -386,18 +397,18 @@ void TestMainWindow::autosaveIsOfferedForRecovery() {
     QVERIFY(m_window->document()->save(path));
     m_window->action("addCylinder")->trigger();
     const std::string edited = sceneText(m_window->document()->scene());
-    m_window->setAutosaveInterval(50);
-    QTRY_VERIFY_WITH_TIMEOUT(QFile::exists(MainWindow::recoveryFilePath()), 5000);
+    m_window->documentManager()->setAutosaveInterval(50);
+    QTRY_VERIFY_WITH_TIMEOUT(QFile::exists(DocumentManager::recoveryFilePath()), 5000);
 
     // "Crash": the window goes away without closing (no prompt, no clean-up).
     m_window->document()->undoStack()->setClean();
     m_window.release()->deleteLater();  // as if the process ended here
-    QVERIFY(QFile::exists(MainWindow::recoveryFilePath()));
+    QVERIFY(QFile::exists(DocumentManager::recoveryFilePath()));
 
     m_window = std::make_unique<MainWindow>();
     m_prompts.install(*m_window);
     m_prompts.confirmAnswer = true;
-    QVERIFY(m_window->offerRecovery());
+    QVERIFY(m_window->documentManager()->offerRecovery());
     QCOMPARE(m_prompts.questions.size(), 1);
     QVERIFY2(m_prompts.questions.first().contains("recover.json"), qPrintable(m_prompts.questions.first()));
     QCOMPARE(sceneText(m_window->document()->scene()), edited);
@@ -405,9 +416,9 @@ void TestMainWindow::autosaveIsOfferedForRecovery() {
     QVERIFY(m_window->document()->isModified());
 
     // Saving clears the recovery file; a normal close leaves none.
-    QVERIFY(m_window->save());
-    QVERIFY(!QFile::exists(MainWindow::recoveryFilePath()));
-    QVERIFY(!m_window->offerRecovery());
+    QVERIFY(m_window->documentManager()->save());
+    QVERIFY(!QFile::exists(DocumentManager::recoveryFilePath()));
+    QVERIFY(!m_window->documentManager()->offerRecovery());
 }
 
 void TestMainWindow::fileChangedOnDiskOffersReload() {
@@ -416,7 +427,7 @@ void TestMainWindow::fileChangedOnDiskOffersReload() {
     m_window->show();
     // Our own save is not "changed by another program".
     m_window->action("addBox")->trigger();
-    QVERIFY(m_window->save());
+    QVERIFY(m_window->documentManager()->save());
     QTest::qWait(300);
     QVERIFY(m_prompts.questions.isEmpty());
 
@@ -637,6 +648,50 @@ void TestMainWindow::addDuplicateDeleteActions() {
     QCOMPARE(m_window->simulation()->bodyIds().size(), std::size_t(count + 2));
 }
 
+// The keys a user presses, through Qt's shortcut map to SceneActions and the DocumentManager.
+void TestMainWindow::shortcutsReachTheSceneActionsAndFileCommands() {
+    interplay::SceneDocument* document = m_window->document();
+    QUndoStack* stack = document->undoStack();
+    m_window->activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(m_window.get()));
+    const int count = document->bodyCount();
+    document->setSelectedBodies({1});
+    const QString name = document->bodyName(1);
+
+    QTest::keyClick(m_window.get(), Qt::Key_D, Qt::ControlModifier);
+    QCOMPARE(document->bodyCount(), count + 1);
+    QCOMPARE(stack->undoText(), "Duplicate " + name);
+    QCOMPARE(document->selectedBodies(), QList<int>{count});
+    const QString copy = document->bodyName(count);
+    QTest::keyClick(m_window.get(), Qt::Key_Delete);
+    QCOMPARE(document->bodyCount(), count);
+    QCOMPARE(stack->undoText(), "Delete " + copy);
+    QTest::keyClick(m_window.get(), Qt::Key_A, Qt::ControlModifier);
+    QCOMPARE(document->selectedBodies().size(), count);
+
+    // Ctrl+S on an untitled scene asks where, saves there and lists the file under Open Recent.
+    const QString path = m_dir.filePath("shortcut.json");
+    m_prompts.fileAnswer = path;
+    QTest::keyClick(m_window.get(), Qt::Key_S, Qt::ControlModifier);
+    QCOMPARE(document->filePath(), path);
+    QVERIFY(!m_window->isWindowModified());
+    auto* recent = m_window->findChild<QMenu*>("recentMenu");
+    QCOMPARE(recent->actions().first()->toolTip(), path);
+
+    // Ctrl+N starts an untitled scene; the recent entry brings the saved one back; Ctrl+O opens another.
+    QTest::keyClick(m_window.get(), Qt::Key_N, Qt::ControlModifier);
+    QVERIFY(document->filePath().isEmpty());
+    QCOMPARE(m_window->windowTitle(), QString("[*]Untitled — Interplay"));
+    recent->actions().first()->trigger();
+    QCOMPARE(document->filePath(), path);
+    QCOMPARE(document->bodyCount(), count);
+    m_prompts.fileAnswer = INTERPLAY_SOURCE_DIR "/scenes/incline.json";
+    QTest::keyClick(m_window.get(), Qt::Key_O, Qt::ControlModifier);
+    QCOMPARE(document->filePath(), m_prompts.fileAnswer);
+    QCOMPARE(m_window->documentManager()->recentFiles(), (QStringList{m_prompts.fileAnswer, path}));
+    QCOMPARE(m_prompts.unsavedAsked, 0);  // nothing was unsaved at any point
+}
+
 void TestMainWindow::treeSelectionFollowsTheDocument() {
     QTreeView* tree = m_window->sceneTree();
     interplay::SceneTreeModel* model = m_window->sceneTreeModel();
@@ -776,7 +831,8 @@ void TestMainWindow::jointAddedWhilePausedHoldsTheBodiesWhereTheyAre() {
 
 void TestMainWindow::draggingInABigSceneMovesOneBodyInPlace() {
     QString error;
-    QVERIFY2(m_window->openFile(INTERPLAY_SOURCE_DIR "/scenes/pile1k.json", &error), qPrintable(error));
+    QVERIFY2(m_window->documentManager()->openFile(INTERPLAY_SOURCE_DIR "/scenes/pile1k.json", &error),
+             qPrintable(error));
     interplay::Viewport* viewport = m_window->viewport();
     interplay::SceneDocument* document = m_window->document();
     interplay::SimulationController* simulation = m_window->simulation();
@@ -1118,7 +1174,7 @@ void TestMainWindow::everyDemoSceneRenders_data() {
 void TestMainWindow::everyDemoSceneRenders() {
     QFETCH(QString, path);
     QString error;
-    QVERIFY2(m_window->openFile(path, &error), qPrintable(error));
+    QVERIFY2(m_window->documentManager()->openFile(path, &error), qPrintable(error));
     m_window->simulation()->stepFrames(10);
     const QImage image = m_window->viewport()->grabViewport();
     QVERIFY(!image.isNull());
