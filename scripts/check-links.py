@@ -42,7 +42,11 @@ def prose_lines(path):
             yield number, INLINE_CODE.sub("", line)
 
 
-def anchors(path, cache={}):
+_anchors_of = {}  # path -> its anchors, each target read once
+
+
+def anchors(path):
+    cache = _anchors_of
     if path not in cache:
         seen = {}
         found = set()
@@ -73,7 +77,8 @@ def check(path):
             resolved = (path.parent / file_part).resolve() if file_part else path
             where = f"{path.relative_to(ROOT)}:{number}: {target}"
             if not resolved.exists():
-                problems.append(f"{where} (no such file: {resolved.relative_to(ROOT) if resolved.is_relative_to(ROOT) else resolved})")
+                shown = resolved.relative_to(ROOT) if resolved.is_relative_to(ROOT) else resolved
+                problems.append(f"{where} (no such file: {shown})")
             elif anchor and resolved.suffix == ".md" and anchor not in anchors(resolved):
                 problems.append(f"{where} (no heading in {resolved.relative_to(ROOT)} has the anchor #{anchor})")
             elif anchor and resolved.suffix != ".md" and not re.fullmatch(r"L\d+(-L\d+)?", anchor):
