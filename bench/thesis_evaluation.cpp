@@ -16,6 +16,8 @@
 #include "simcore/world/world.h"
 #include "simcore/world_settings.h"
 
+#include "support/scene_builders.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -58,22 +60,14 @@ double msSince(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-// Static ground: a box whose top face is y = 0.
-BodyId addGround(World& world, float halfXZ) {
-    BodyCreationSettings g;
-    g.name = "ground";
-    g.shape = Shape::box(Vec3(halfXZ, 0.5f, halfXZ));
-    g.motion = MotionType::Static;
-    g.position = Vec3(0.0f, -0.5f, 0.0f);
-    return world.createBody(g);
-}
+// The ground and the cubes keep the engine's default friction (see the top of the file).
+const float kFriction = BodyCreationSettings{}.friction;
+
+BodyId addGround(World& world, float halfXZ) { return scene_builders::addGround(world, kFriction, 0.0f, halfXZ); }
 
 BodyId addUnitCube(World& world, const Vec3& position, const std::string& name) {
-    BodyCreationSettings b;
+    BodyCreationSettings b = scene_builders::cube(position, kCubeMass, 0.5f, kFriction);
     b.name = name;
-    b.shape = Shape::box(Vec3(0.5f));
-    b.position = position;
-    b.mass = kCubeMass;
     return world.createBody(b);
 }
 
@@ -119,8 +113,8 @@ StackResult runStack(int n) {
     World world(settings);
     addGround(world, 50.0f);
     std::vector<BodyId> cubes;
-    for (int i = 0; i < n; ++i)
-        cubes.push_back(addUnitCube(world, Vec3(0.0f, 0.5f + static_cast<float>(i), 0.0f), "cube " + std::to_string(i)));
+    for (const Vec3& centre : scene_builders::towerCentres(n))
+        cubes.push_back(addUnitCube(world, centre, "cube " + std::to_string(cubes.size())));
 
     StackResult r;
     const auto steps = static_cast<std::uint64_t>(std::lround(kStackSeconds / settings.timeStep));
@@ -228,13 +222,8 @@ FallResult runFalling(int n, double seconds) {
     // 1 km wide: cubes thrown out of the largest piles travel tens of metres, and should land, not fall off.
     addGround(world, 500.0f);
     std::vector<BodyId> cubes;
-    const float centre = 0.5f * static_cast<float>(r.side - 1);
-    for (int i = 0; i < n; ++i) {
-        const int x = i % r.side, z = (i / r.side) % r.side, y = i / (r.side * r.side);
-        const Vec3 p((static_cast<float>(x) - centre) * spacing, 2.0f + static_cast<float>(y) * spacing,
-                     (static_cast<float>(z) - centre) * spacing);
-        cubes.push_back(addUnitCube(world, p, "cube " + std::to_string(i)));
-    }
+    const std::vector<Vec3> grid = scene_builders::gridCentres(r.side, r.layers, r.side, spacing, 2.0f);
+    for (int i = 0; i < n; ++i) cubes.push_back(addUnitCube(world, grid[static_cast<std::size_t>(i)], "cube " + std::to_string(i)));
     const double dt = world.settings().timeStep;
     const auto steps = static_cast<std::uint64_t>(std::lround(seconds / dt));
     const auto fallingSteps = static_cast<std::uint64_t>(std::lround(kFallingWindow / dt));
@@ -315,18 +304,9 @@ StageResult runResting(int layout, bool sleep) {
     settings.sleep.enabled = sleep;
     World world(settings);
     addGround(world, 50.0f);
-    if (layout == 0) {
-        for (int z = 0; z < 4; ++z)
-            for (int x = 0; x < 8; ++x)
-                addUnitCube(world, Vec3((static_cast<float>(x) - 3.5f) * 1.2f, 0.5f, (static_cast<float>(z) - 1.5f) * 1.2f),
-                            "cube");
-    } else {
-        for (int y = 0; y < 2; ++y)
-            for (int z = 0; z < 4; ++z)
-                for (int x = 0; x < 4; ++x)
-                    addUnitCube(world, Vec3(static_cast<float>(x) - 1.5f, 0.5f + static_cast<float>(y), static_cast<float>(z) - 1.5f),
-                                "cube");
-    }
+    const std::vector<Vec3> centres = layout == 0 ? scene_builders::gridCentres(8, 1, 4, 1.2f, 0.5f)
+                                                  : scene_builders::gridCentres(4, 2, 4, 1.0f, 0.5f);
+    for (const Vec3& centre : centres) addUnitCube(world, centre, "cube");
     StageResult r;
     for (int s = 0; s < kProfileSteps; ++s) {
         world.step();

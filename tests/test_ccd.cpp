@@ -174,11 +174,7 @@ void TestCcd::thinSpinningPlankNeverPassesStack() {
     WorldSettings settings;
     settings.sleep.enabled = false;
     World world(settings);
-    BodyCreationSettings ground;
-    ground.motion = MotionType::Static;
-    ground.shape = Shape::box(Vec3(20.0f, 0.5f, 20.0f));
-    ground.position = Vec3(0.0f, -0.5f, 0.0f);
-    world.createBody(ground);
+    test_support::addGround(world, BodyCreationSettings{}.friction, 0.0f, 20.0f);
     for (int k = 0; k < 3; ++k) {
         BodyCreationSettings cube;
         cube.shape = Shape::box(Vec3(0.5f));

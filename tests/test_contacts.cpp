@@ -1,3 +1,5 @@
+// Over 800 lines because it is the contact solver's one suite: some thirty closed-form cases, each
+// with the reasoning behind its tolerance next to it, which is most of the length.
 // Contact physics against closed forms and stability bounds: sliding and sticking on an incline,
 // rolling, elastic and inelastic impacts, stacks that must stand, sleeping and waking, effect
 // switches, no allocation in steady state, and long mixed runs that stay finite and never gain

@@ -1,3 +1,5 @@
+// Over 800 lines because it is the document layer's one suite: a test per undo command type (with
+// undo, redo, merging and the clean state) and per panel model, each short.
 // The editor's document layer without a window: every undo command (add, remove, reorder, change
 // bodies, add/change/delete joints, change settings) with undo/redo, merging of continuous edits,
 // the clean state and what "modified" means, open/save/revert round trips, thesis import, load

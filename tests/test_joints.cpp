@@ -1,3 +1,5 @@
+// Over 800 lines because it is the joints' one suite: some thirty closed-form cases, each with the
+// reasoning behind its tolerance next to it, which is most of the length.
 // Joint physics against closed forms and stability bounds: pendulum periods (ball, hinge and
 // distance joints, against the exact large-amplitude period), hinge limits and motors, slider
 // limits, a fixed joint's pose, distance limits and spring frequency, a 20-link hinge chain, heavy

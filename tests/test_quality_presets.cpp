@@ -6,6 +6,8 @@
 #include "simcore/world/quality_preset.h"
 #include "simcore/world/world.h"
 
+#include "support/scene_builders.h"
+
 #include <QFile>
 #include <QProcess>
 #include <QTemporaryDir>
@@ -34,23 +36,10 @@ WorldSettings presetSettings(QualityPreset preset) {
 // slid in 2 s against d = 1/2 g (sin 30 - 0.3 cos 30) t^2 = 4.713 m.
 double inclineSlideError(const WorldSettings& settings) {
     World world(settings);
-    const float theta = kPi / 6.0f;
-    const Quat rotation = glm::angleAxis(theta, Vec3(0.0f, 0.0f, 1.0f));
-    const Vec3 normal = rotation * Vec3(0.0f, 1.0f, 0.0f);
-    const Vec3 downSlope = rotation * Vec3(-1.0f, 0.0f, 0.0f);
-    BodyCreationSettings ramp;
-    ramp.motion = MotionType::Static;
-    ramp.shape = Shape::box(Vec3(12.0f, 0.1f, 2.0f));
-    ramp.orientation = rotation;
-    ramp.friction = 0.3f;
-    world.createBody(ramp);
-    BodyCreationSettings box;
-    box.shape = Shape::box(Vec3(0.5f));
-    box.mass = 1.0f;
-    box.orientation = rotation;
-    box.position = normal * 0.6f - downSlope * 8.0f;
-    box.friction = 0.3f;
-    const BodyId id = world.createBody(box);
+    const scene_builders::Incline incline(world, Shape::box(Vec3(0.5f)), 0.5f, 0.3f);
+    const float theta = incline.kTheta;
+    const Vec3 downSlope = incline.downSlope;
+    const BodyId id = incline.body;
     const Vec3 start = world.centerOfMass(id);
     while (world.simulatedTime() < 2.0 - 0.5 * double(settings.timeStep)) world.step();
     const double t = world.simulatedTime();

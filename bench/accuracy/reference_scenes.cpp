@@ -1,6 +1,7 @@
 #include "reference_scenes.h"
 
-#include "tests/support/worlds.h"
+#include "support/scene_builders.h"
+#include "support/worlds.h"  // agm
 
 #include <algorithm>
 #include <chrono>
@@ -52,24 +53,12 @@ Observation observation(const World& world, std::vector<double> values) {
     return {std::move(values), !world.findNonFiniteBody()};
 }
 
-// Static ground: a box whose top face is y = 0.
-void addGround(World& world, float halfSize) {
-    BodyCreationSettings g;
-    g.name = "ground";
-    g.motion = MotionType::Static;
-    g.shape = Shape::box(Vec3(halfSize, 0.5f, halfSize));
-    g.position = Vec3(0.0f, -0.5f, 0.0f);
-    world.createBody(g);
-}
+// The setups' material: friction 0.5 for the ground and every cube, as the tables state.
+constexpr float kFriction = 0.5f;
 
-BodyCreationSettings unitCube(const Vec3& position, float mass) {
-    BodyCreationSettings b;
-    b.name = "cube";
-    b.shape = Shape::box(Vec3(0.5f));
-    b.position = position;
-    b.mass = mass;
-    return b;
-}
+void addGround(World& world, float halfSize) { scene_builders::addGround(world, kFriction, 0.0f, halfSize); }
+
+BodyCreationSettings unitCube(const Vec3& position, float mass) { return scene_builders::cube(position, mass, 0.5f, kFriction); }
 
 WorldSettings zeroGravity() {
     WorldSettings s;
@@ -100,9 +89,9 @@ double largestCentreDistance(const Observation& observed, const Observation* con
 }
 
 // ---- incline: a static 30° ramp (rising towards +x) with a body touching its top face 8 m up-slope
-// (the tests' own incline, tests/support/worlds.h)
+// (the tests' own incline, tests/support/scene_builders.h)
 
-constexpr float kInclineTheta = test_support::Incline::kTheta;
+constexpr float kInclineTheta = scene_builders::Incline::kTheta;
 constexpr double kSlideFriction = 0.3;  // below tan 30° = 0.577: slides
 constexpr double kRollFriction = 0.5;   // above 2/7 tan 30° = 0.165: rolls without slipping
 
@@ -110,7 +99,7 @@ constexpr double kRollFriction = 0.5;   // above 2/7 tan 30° = 0.165: rolls wit
 Observation runIncline(const WorldSettings& settings, double seconds, SteppingTimer& timer, const Shape& shape,
                        float offsetAlongNormal, float friction) {
     World world(settings);
-    const test_support::Incline incline(world, shape, offsetAlongNormal, friction);
+    const scene_builders::Incline incline(world, shape, offsetAlongNormal, friction);
     const Vec3 start = world.centerOfMass(incline.body);
     stepFor(world, seconds, timer);
     return observation(world, {glm::dot(world.centerOfMass(incline.body) - start, incline.downSlope), world.simulatedTime()});
@@ -332,7 +321,7 @@ ReferenceScene standingCubes(std::vector<std::pair<Vec3, float>> cubes) {
 
 ReferenceScene tower() {
     std::vector<std::pair<Vec3, float>> cubes;
-    for (int i = 0; i < 16; ++i) cubes.emplace_back(Vec3(0.0f, 0.5f + static_cast<float>(i), 0.0f), 1.0f);
+    for (const Vec3& centre : scene_builders::towerCentres(16)) cubes.emplace_back(centre, 1.0f);
     ReferenceScene s = standingCubes(std::move(cubes));
     s.name = "tower-drift";
     s.title = "Tower of 16 cubes: drift";
@@ -345,7 +334,7 @@ ReferenceScene tower() {
 
 ReferenceScene pyramid() {
     std::vector<std::pair<Vec3, float>> cubes;
-    for (const Vec3& centre : test_support::squarePyramidCentres(5)) cubes.emplace_back(centre, 1.0f);
+    for (const Vec3& centre : scene_builders::squarePyramidCentres(5)) cubes.emplace_back(centre, 1.0f);
     ReferenceScene s = standingCubes(std::move(cubes));
     s.name = "pyramid-drift";
     s.title = "Pyramid of 55 cubes: drift";
@@ -427,12 +416,7 @@ ReferenceScene pile() {
     s.run = [](const WorldSettings& settings, double seconds, SteppingTimer& timer) {
         World world(settings);
         addGround(world, 50.0f);
-        for (int i = 0; i < 64; ++i) {
-            const int x = i % 4, z = (i / 4) % 4, y = i / 16;
-            world.createBody(unitCube(Vec3((static_cast<float>(x) - 1.5f) * 1.2f, 2.0f + static_cast<float>(y) * 1.2f,
-                                           (static_cast<float>(z) - 1.5f) * 1.2f),
-                                      1.0f));
-        }
+        for (const Vec3& centre : scene_builders::gridCentres(4, 4, 4, 1.2f, 2.0f)) world.createBody(unitCube(centre, 1.0f));
         double worst = 0.0;
         stepFor(world, seconds, timer, [&] { worst = std::max(worst, static_cast<double>(world.lastStepProfile().maxPenetration)); });
         return observation(world, {worst});

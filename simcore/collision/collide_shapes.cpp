@@ -1,3 +1,9 @@
+// Over 800 lines because every shape pair's narrow phase uses the same file-local helpers
+// (manifold reduction, segment and polygon clipping, the box/hull polyhedron view), and the
+// constexpr dispatch table at the end needs every pair function in view; split by pair, those helpers
+// would become a private header read by every file. Sections, in order: candidates and reduction,
+// small geometry, round pairs, polyhedra (SAT and clipping), box-box, dispatch.
+
 #include "simcore/collision/collide_shapes.h"
 
 #include "simcore/collision/epa.h"

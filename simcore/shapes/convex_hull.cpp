@@ -1,3 +1,7 @@
+// Over 800 lines because it is one algorithm: the Quickhull class (whose robustness rules, listed
+// below, depend on each other), then the merging of its coplanar triangles into faces that reads the
+// Quickhull's triangles; only ConvexHull::build at the end is public.
+//
 // Quickhull in double precision with a tolerance relative to the cloud's size, followed by merging
 // of coplanar triangles into convex polygon faces.
 //
