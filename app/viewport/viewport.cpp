@@ -1,7 +1,6 @@
 #include "app/viewport/viewport.h"
 
 #include "app/document/scene_document.h"
-#include "app/document/undo_commands.h"
 #include "app/simulation/simulation_controller.h"
 #include "app/viewport/color_space.h"
 #include "app/viewport/debug_draw_options.h"
@@ -13,7 +12,6 @@
 #include <QMouseEvent>
 #include <QOpenGLContext>
 #include <QOpenGLShaderProgram>
-#include <QUndoStack>
 #include <QWheelEvent>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -71,10 +69,6 @@ constexpr float kJointAxisLength = 0.6f;      // m, either way along a selected 
 // independent, as mouse positions are, so the reach is the same on a high-DPI screen).
 constexpr float kJointPickPixels = 8.0f;
 
-// Fly speed in m/s per metre of camera distance, so flying suits a scene of any size; Shift boosts.
-constexpr float kFlySpeedPerMetre = 0.6f;
-constexpr float kFlyBoost = 4.0f;
-constexpr float kRotateDegreesPerPixel = 0.5f;  // Alt-drag turning a body about the vertical
 constexpr int kMaxCachedMeshes = 512;           // distinct shapes kept on the GPU between worlds
 
 const glm::vec3 kLightDirection = glm::normalize(glm::vec3(-0.35f, 1.0f, 0.55f));
@@ -301,8 +295,8 @@ glm::mat4 modelMatrix(const simcore::Transform& t) {
 Viewport::Viewport(QWidget* parent) : QOpenGLWidget(parent) {
     setFocusPolicy(Qt::StrongFocus);
     setMinimumSize(160, 120);
-    m_flyTimer.setInterval(16);
-    connect(&m_flyTimer, &QTimer::timeout, this, &Viewport::flyTick);
+    connect(&m_tool, &SelectionTool::cameraChanged, this, &Viewport::cameraChanged);
+    connect(&m_tool, &SelectionTool::repaintNeeded, this, qOverload<>(&QWidget::update));
     m_frameClock.start();
 }
 
@@ -316,6 +310,7 @@ Viewport::~Viewport() {
 void Viewport::setSimulation(SimulationController* simulation) {
     if (m_simulation) disconnect(m_simulation, nullptr, this, nullptr);
     m_simulation = simulation;
+    m_tool.setSimulation(simulation);
     m_drawListDirty = true;
     if (m_simulation) {
         connect(m_simulation, &SimulationController::stepped, this, qOverload<>(&QWidget::update));
@@ -335,6 +330,7 @@ void Viewport::setSimulation(SimulationController* simulation) {
 void Viewport::setDocument(SceneDocument* document) {
     if (m_document) disconnect(m_document, nullptr, this, nullptr);
     m_document = document;
+    m_tool.setDocument(document);
     if (m_document) connect(m_document, &SceneDocument::selectionChanged, this, qOverload<>(&QWidget::update));
     update();
 }
@@ -975,231 +971,40 @@ void Viewport::paintGL() {
     while (!m_frameTimes.empty() && m_frameTimes.front() <= now - 1000) m_frameTimes.pop_front();
 }
 
-// ---- Mouse and keys -----------------------------------------------------------------------------
+// ---- Mouse and keys: the selection tool's ------------------------------------------------------
 
 void Viewport::mousePressEvent(QMouseEvent* event) {
-    if (m_drag != Drag::None) return;  // a second button during a gesture: ignore it
-    m_lastMouse = m_pressMouse = event->position().toPoint();
-    m_pressModifiers = event->modifiers();
-    m_dragMoved = false;
-    m_clickedBody = -1;
-    m_clickedJoint = -1;
-    m_jointInPressedBody = -1;
-    if (event->button() == Qt::RightButton) {
-        m_drag = Drag::Fly;
-        m_flyClock.start();
-        m_flyTimer.start();
-    } else if (event->button() == Qt::MiddleButton) {
-        m_drag = Drag::Pan;
-    } else if (event->button() == Qt::LeftButton) {
-        // Joint marks are drawn over the bodies, so a joint near the cursor takes the click (it is
-        // selected on release, and a drag from it moves the camera, never a body), unless its point
-        // lies inside or behind the body under the cursor, as a joint anchored at a body's centre
-        // does: then the body takes the press, to be dragged, and a click on it once it alone is
-        // selected reaches the joint, if the joint is one of that body's.
-        auto hit = pick(event->position());
-        const int hitIndex = hit ? m_simulation->sceneIndexOf(hit->body) : -1;
-        if (const auto joint = pickJoint(event->position())) {
-            if (!hit || hit->fraction >= joint->distance) {
-                m_clickedJoint = joint->joint;
-            } else if (m_document && hitIndex >= 0) {
-                const simcore::SceneJoint& hidden = m_document->joint(joint->joint);
-                if (hidden.bodyA == static_cast<std::size_t>(hitIndex) || hidden.bodyB == static_cast<std::size_t>(hitIndex))
-                    m_jointInPressedBody = joint->joint;
-            }
-        }
-        if (m_clickedJoint >= 0) hit.reset();
-        const int sceneIndex = hit ? hitIndex : -1;
-        m_pressedBodyWasSelected = m_document && sceneIndex >= 0 && m_document->selectedBodies() == QList<int>{sceneIndex};
-        if (hit && (sceneIndex >= 0 || m_simulation->isPlaying())) {
-            pressOnBody(event, *hit, sceneIndex);
-        } else {
-            m_drag = (event->modifiers() & Qt::ShiftModifier) ? Drag::Pan : Drag::Orbit;
-        }
-    } else {
-        QOpenGLWidget::mousePressEvent(event);
-        return;
-    }
-    event->accept();
-}
-
-void Viewport::pressOnBody(QMouseEvent* event, const simcore::WorldRayHit& hit, int sceneIndex) {
-    m_clickedBody = sceneIndex;
-    const bool extend = event->modifiers() & (Qt::ControlModifier | Qt::ShiftModifier);
-    // Select on press (so a drag moves what was pressed), unless extending: that toggles on release.
-    if (m_document && sceneIndex >= 0 && !extend && !m_document->selectedBodies().contains(sceneIndex)) {
-        m_document->setSelectedBodies({sceneIndex});
-    }
-    if (m_simulation->isPlaying()) {
-        // Grab the hit point; the spring keeps it at the same distance from the eye.
-        const simcore::World* world = m_simulation->world();
-        const glm::vec3 local = glm::inverse(world->orientation(hit.body)) * (hit.point - world->position(hit.body));
-        m_grabDepth = glm::length(hit.point - m_camera.eye());
-        m_simulation->beginGrab(hit.body, local, hit.point);
-        m_drag = Drag::Grab;
-        return;
-    }
-    if (!m_document || extend) {
-        m_drag = Drag::Orbit;
-        return;
-    }
-    m_drag = (event->modifiers() & Qt::AltModifier) ? Drag::RotateBodies : Drag::MoveBodies;
-    m_dragIndices = m_document->selectedBodies();
-    m_dragStartBodies.clear();
-    for (int index : m_dragIndices) m_dragStartBodies.push_back(m_document->body(index));
-    m_dragPlaneHeight = hit.point.y;
-    m_dragStart = hit.point;
-    m_dragPushed = false;
-}
-
-std::optional<glm::vec3> Viewport::dragPlanePoint(const QPointF& pixel) const {
-    const auto [origin, direction] = rayThrough(pixel);
-    // Rays nearly parallel to the plane would throw the body to the horizon.
-    if (std::abs(direction.y) < 1e-3f) return std::nullopt;
-    const float t = (m_dragPlaneHeight - origin.y) / direction.y;
-    if (t <= 0.0f || t > m_camera.farPlane()) return std::nullopt;
-    return origin + t * direction;
-}
-
-void Viewport::dragBodies(const QPointF& position) {
-    std::vector<simcore::SceneBody> after = m_dragStartBodies;
-    QString text;
-    BodyField field;
-    if (m_drag == Drag::MoveBodies) {
-        const auto point = dragPlanePoint(position);
-        if (!point) return;
-        const glm::vec3 offset = *point - m_dragStart;
-        for (simcore::SceneBody& body : after) body.body.position += offset;
-        field = BodyField::Position;
-        text = tr("Move %1").arg(bodiesLabel(*m_document, m_dragIndices));
-    } else {
-        const float degrees = static_cast<float>(position.x() - m_pressMouse.x()) * kRotateDegreesPerPixel;
-        const glm::quat turn = glm::angleAxis(glm::radians(degrees), glm::vec3(0.0f, 1.0f, 0.0f));
-        for (simcore::SceneBody& body : after) body.body.orientation = glm::normalize(turn * body.body.orientation);
-        field = BodyField::Orientation;
-        text = tr("Rotate %1").arg(bodiesLabel(*m_document, m_dragIndices));
-    }
-    // The first command of a drag starts a history entry; the rest merge into it.
-    m_document->undoStack()->push(
-        new ChangeBodies(m_document, text, field, m_dragIndices, std::move(after), std::exchange(m_dragPushed, true)));
+    if (m_tool.mousePress(event)) event->accept();
+    else QOpenGLWidget::mousePressEvent(event);
 }
 
 void Viewport::mouseMoveEvent(QMouseEvent* event) {
-    if (m_drag == Drag::None) {
-        QOpenGLWidget::mouseMoveEvent(event);
-        return;
-    }
-    const QPoint position = event->position().toPoint();
-    const QPoint delta = position - m_lastMouse;
-    m_lastMouse = position;
-    // A few pixels of jitter are still a click.
-    if ((position - m_pressMouse).manhattanLength() > 3) m_dragMoved = true;
-    if (!m_dragMoved) return;
-    const float dx = static_cast<float>(delta.x()), dy = static_cast<float>(delta.y());
-    switch (m_drag) {
-    case Drag::Orbit: m_camera.orbit(dx, dy); break;
-    case Drag::Pan: m_camera.pan(dx, dy, static_cast<float>(height())); break;
-    case Drag::Fly: m_camera.lookAround(dx, dy); break;
-    case Drag::MoveBodies:
-    case Drag::RotateBodies: dragBodies(event->position()); return;
-    case Drag::Grab: {
-        const auto [origin, direction] = rayThrough(event->position());
-        m_simulation->moveGrab(origin + direction * m_grabDepth);
-        update();
-        return;
-    }
-    case Drag::None: return;
-    }
-    emit cameraChanged();
-    update();
+    if (!m_tool.mouseMove(event)) QOpenGLWidget::mouseMoveEvent(event);
 }
 
 void Viewport::mouseReleaseEvent(QMouseEvent* event) {
-    if (m_drag == Drag::None) {
-        QOpenGLWidget::mouseReleaseEvent(event);
-        return;
-    }
-    if (m_drag == Drag::Grab) m_simulation->endGrab();
-    if (m_drag == Drag::Fly) {
-        m_flyTimer.stop();
-        m_flyKeys.clear();
-    }
-    // A click (no drag): Ctrl/Shift toggles the joint or body in the selection; a plain click
-    // selects just it, or on nothing clears the selection. Camera gestures that moved select nothing.
-    if (!m_dragMoved && m_document && event->button() == Qt::LeftButton) {
-        const bool extend = m_pressModifiers & (Qt::ControlModifier | Qt::ShiftModifier);
-        const auto toggle = [](QList<int> indices, int index) {
-            if (!indices.removeOne(index)) indices << index;
-            return indices;
-        };
-        if (extend && m_clickedJoint >= 0) {
-            m_document->setSelection(m_document->selectedBodies(),
-                                     toggle(m_document->selectedJoints(), m_clickedJoint));
-        } else if (extend && m_clickedBody >= 0) {
-            m_document->setSelection(toggle(m_document->selectedBodies(), m_clickedBody), m_document->selectedJoints());
-        } else if (!extend && m_clickedJoint >= 0) {
-            m_document->setSelectedJoints({m_clickedJoint});
-        } else if (!extend && m_clickedBody < 0) {
-            m_document->setSelectedBodies({});
-        } else if (!extend && m_jointInPressedBody >= 0 && m_pressedBodyWasSelected) {
-            m_document->setSelectedJoints({m_jointInPressedBody});
-        } else if (!extend) {
-            m_document->setSelectedBodies({m_clickedBody});
-        }
-    }
-    m_drag = Drag::None;
-    m_dragStartBodies.clear();
-    m_dragIndices.clear();
-    update();
-    event->accept();
+    if (m_tool.mouseRelease(event)) event->accept();
+    else QOpenGLWidget::mouseReleaseEvent(event);
 }
 
 void Viewport::wheelEvent(QWheelEvent* event) {
-    // 120 units per notch; touchpads send smaller deltas, which zoom proportionally.
-    m_camera.zoom(static_cast<float>(event->angleDelta().y()) / 120.0f);
-    emit cameraChanged();
-    update();
+    m_tool.wheel(event);
     event->accept();
 }
 
 void Viewport::keyPressEvent(QKeyEvent* event) {
-    static const QSet<int> flyKeys{Qt::Key_W, Qt::Key_A, Qt::Key_S, Qt::Key_D, Qt::Key_Q, Qt::Key_E, Qt::Key_Shift};
-    if (m_drag == Drag::Fly && flyKeys.contains(event->key())) {
-        m_flyKeys.insert(event->key());
-        event->accept();
-        return;
-    }
-    QOpenGLWidget::keyPressEvent(event);
+    if (m_tool.keyPress(event)) event->accept();
+    else QOpenGLWidget::keyPressEvent(event);
 }
 
 void Viewport::keyReleaseEvent(QKeyEvent* event) {
-    if (!event->isAutoRepeat() && m_flyKeys.remove(event->key())) {
-        event->accept();
-        return;
-    }
-    QOpenGLWidget::keyReleaseEvent(event);
+    if (m_tool.keyRelease(event)) event->accept();
+    else QOpenGLWidget::keyReleaseEvent(event);
 }
 
 void Viewport::focusOutEvent(QFocusEvent* event) {
-    m_flyKeys.clear();  // a key released in another window never reaches us
+    m_tool.focusOut();
     QOpenGLWidget::focusOutEvent(event);
-}
-
-void Viewport::flyTick() {
-    const float seconds = static_cast<float>(m_flyClock.restart()) * 1e-3f;
-    glm::vec3 move(0.0f);  // (right, up, forward)
-    if (m_flyKeys.contains(Qt::Key_D)) move.x += 1.0f;
-    if (m_flyKeys.contains(Qt::Key_A)) move.x -= 1.0f;
-    if (m_flyKeys.contains(Qt::Key_E)) move.y += 1.0f;
-    if (m_flyKeys.contains(Qt::Key_Q)) move.y -= 1.0f;
-    if (m_flyKeys.contains(Qt::Key_W)) move.z += 1.0f;
-    if (m_flyKeys.contains(Qt::Key_S)) move.z -= 1.0f;
-    if (move == glm::vec3(0.0f)) return;
-    const float speed = kFlySpeedPerMetre * std::max(m_camera.distance(), 2.0f) *
-                        (m_flyKeys.contains(Qt::Key_Shift) ? kFlyBoost : 1.0f);
-    m_camera.fly(glm::normalize(move) * speed * std::min(seconds, 0.1f));
-    emit cameraChanged();
-    update();
 }
 
 }  // namespace interplay

@@ -1,21 +1,14 @@
 #pragma once
 // The 3D view of the running world: lit, shadowed bodies over a ground grid and a sky gradient,
-// seen through an orbit camera (with a fly mode on the right mouse button and WASD). Draws the
-// document's selection outlined (selected joints in the selection colour, anchors and axis
-// marked), sleeping bodies tinted and the debug overlays (bounds, contact points and normals). Mouse interaction:
-//   left click            select the joint whose anchor (or distance rod) is within a few
-//                         pixels, else the body under the cursor (ray cast through simcore);
-//                         a joint of that body hidden inside it takes a click on the body once
-//                         the body alone is selected; Ctrl/Shift-click adds or removes it; a
-//                         click on nothing clears
-//   left drag on a body   paused: move the selection on a horizontal plane (one undo entry);
-//                         with Alt: turn it about the vertical; playing: pull it with a spring
-//   left drag elsewhere   orbit;  Shift or middle drag: pan;  wheel: zoom
-//   right drag + WASDQE   fly (Shift: faster)
+// seen through an orbit camera. Draws the document's selection outlined (selected joints in the
+// selection colour, anchors and axis marked), sleeping bodies tinted and the debug overlays
+// (bounds, contact points and normals). Mouse and keys go to the SelectionTool (see
+// selection_tool.h for the gestures).
 // GL resources live as long as the widget's context (released on aboutToBeDestroyed, as in Qt's
 // hellogl2 example).
 
 #include "app/viewport/camera.h"
+#include "app/viewport/selection_tool.h"
 
 #include "simcore/io/scene.h"
 
@@ -23,10 +16,7 @@
 #include <QImage>
 #include <QOpenGLExtraFunctions>
 #include <QOpenGLWidget>
-#include <QPoint>
-#include <QSet>
 #include <QSurfaceFormat>
-#include <QTimer>
 
 #include <glm/glm.hpp>
 
@@ -143,9 +133,6 @@ private:
         glm::vec3 axis;  // unit; a hinge's or slider's, on body A
     };
 
-    // Mouse gesture in progress.
-    enum class Drag { None, Orbit, Pan, Fly, MoveBodies, RotateBodies, Grab };
-
     void cleanup();
     void releaseMeshes();
     void rebuildDrawList();
@@ -160,11 +147,6 @@ private:
     std::optional<JointAnchors> jointAnchors(std::size_t sceneIndex) const;
     // Light-space box around the bodies worth shadowing.
     glm::mat4 lightViewProjection() const;
-
-    void pressOnBody(QMouseEvent* event, const simcore::WorldRayHit& hit, int sceneIndex);
-    void dragBodies(const QPointF& position);
-    std::optional<glm::vec3> dragPlanePoint(const QPointF& pixel) const;
-    void flyTick();
 
     SimulationController* m_simulation = nullptr;
     SceneDocument* m_document = nullptr;
@@ -189,25 +171,7 @@ private:
     std::vector<BodyDraw> m_draws;
     bool m_drawListDirty = true;
 
-    Drag m_drag = Drag::None;
-    QPoint m_lastMouse;
-    QPoint m_pressMouse;
-    bool m_dragMoved = false;           // the mouse travelled since the press (not a click)
-    int m_clickedBody = -1;             // scene body under the press, for click-to-select on release
-    int m_clickedJoint = -1;            // scene joint under the press (takes the click from bodies)
-    int m_jointInPressedBody = -1;      // a joint under the press whose point the pressed body hides
-    bool m_pressedBodyWasSelected = false;
-    Qt::KeyboardModifiers m_pressModifiers;
-    float m_dragPlaneHeight = 0.0f;     // y of the horizontal plane bodies move on (m)
-    glm::vec3 m_dragStart{0.0f};        // where the drag plane was first hit (m)
-    std::vector<simcore::SceneBody> m_dragStartBodies;  // the selection as it was at the press
-    QList<int> m_dragIndices;
-    bool m_dragPushed = false;          // the drag has pushed its first command (the rest merge)
-    float m_grabDepth = 0.0f;           // grab: distance along the view ray kept while dragging (m)
-
-    QSet<int> m_flyKeys;
-    QTimer m_flyTimer;
-    QElapsedTimer m_flyClock;
+    SelectionTool m_tool{*this};
 
     std::deque<qint64> m_frameTimes;  // ms timestamps of the frames of the last second
     QElapsedTimer m_frameClock;
