@@ -5,11 +5,13 @@
 #include "app/document/scene_document.h"
 #include "app/main_window.h"
 #include "app/simulation/simulation_controller.h"
+#include "app/viewport/debug_draw_options.h"
 #include "app/viewport/shape_mesh.h"
 #include "app/viewport/viewport.h"
 
 #include "simcore/io/scene.h"
 #include "simcore/shapes/convex_hull.h"
+#include "simcore/world/debug_draw.h"
 #include "simcore/world/world.h"
 
 #include <QApplication>
@@ -92,6 +94,28 @@ float colorDistance(QRgb a, QRgb b) {
     return std::sqrt(dr * dr + dg * dg + db * db);
 }
 
+// Whether some pixel within `radius` of `pixel` passes `test`.
+template <typename Test>
+bool anyPixelNear(const QImage& image, const glm::vec3& pixel, int radius, Test test) {
+    for (int dy = -radius; dy <= radius; ++dy) {
+        for (int dx = -radius; dx <= radius; ++dx) {
+            const int x = int(pixel.x) + dx, y = int(pixel.y) + dy;
+            if (x >= 0 && y >= 0 && x < image.width() && y < image.height() && test(image.pixel(x, y))) return true;
+        }
+    }
+    return false;
+}
+
+// What World::draw hands the viewport's overlay, recorded.
+struct OverlayRecorder : simcore::DebugDraw {
+    std::vector<simcore::Aabb> bounds;
+    std::vector<simcore::DebugContactPoint> contacts;
+    std::vector<simcore::DebugJoint> joints;
+    void drawBounds(simcore::BodyId, const simcore::Aabb& box, simcore::DebugBoundsKind) override { bounds.push_back(box); }
+    void drawContactPoint(const simcore::DebugContactPoint& p) override { contacts.push_back(p); }
+    void drawJoint(const simcore::DebugJoint& j) override { joints.push_back(j); }
+};
+
 // The scene without what moves: what the viewport shows behind the bodies.
 simcore::Scene withoutMovingBodies(simcore::Scene scene) {
     std::erase_if(scene.bodies, [](const simcore::SceneBody& b) { return b.body.motion != simcore::MotionType::Static; });
@@ -109,6 +133,7 @@ private slots:
     void documentLoadFailureLeavesDocumentUnchanged();
     void simulationPlaysStepsAndResetsToTheAuthoredScene();
     void mainWindowShowsEveryBody();
+    void overlaysDrawWhatTheWorldEmits();
     void screenshotCommandWritesDeterministicImage();
     void screenshotCommandRejectsUnreadableScene();
 };
@@ -290,6 +315,82 @@ void TestViewport::mainWindowShowsEveryBody() {
         ++checked;
     }
     QVERIFY2(checked >= 5, "the default scene should hold one moving body of every shape type");
+}
+
+// The overlays are drawn where World::draw puts them: contact crosses (pink) at every contact
+// point, bounds (green) along every box's edges, and a joint's anchor cross (near black), which
+// is drawn with the overlays off too.
+void TestViewport::overlaysDrawWhatTheWorldEmits() {
+    simcore::Scene scene;
+    simcore::SceneBody ground;
+    ground.body.name = "ground";
+    ground.body.motion = simcore::MotionType::Static;
+    ground.body.shape = Shape::box(Vec3(4.0f, 0.5f, 4.0f));
+    ground.body.position = Vec3(0.0f, -0.5f, 0.0f);
+    simcore::SceneBody box;
+    box.body.name = "box";
+    box.body.shape = Shape::box(Vec3(0.5f));
+    box.body.position = Vec3(-1.0f, 0.5f, 0.0f);
+    simcore::SceneBody bob;
+    bob.body.name = "bob";
+    bob.body.shape = Shape::box(Vec3(0.25f));
+    bob.body.position = Vec3(1.5f, 1.5f, 0.0f);
+    scene.bodies = {ground, box, bob};
+    simcore::SceneJoint hang;
+    hang.joint.type = simcore::JointType::Ball;
+    hang.joint.anchor = Vec3(1.5f, 2.5f, 0.0f);
+    hang.bodyA = 2;
+    scene.joints = {hang};
+
+    interplay::SimulationController simulation;
+    QVERIFY(simulation.setScene(scene));
+    simulation.stepFrames(30);  // the box settles: four touching points
+    interplay::DebugDrawOptions options;
+    interplay::Viewport viewport;
+    viewport.setSimulation(&simulation);
+    viewport.setDebugDrawOptions(&options);
+    viewport.resize(800, 600);
+    viewport.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&viewport));
+    viewport.grabViewport();  // the first frame frames the scene; then aim where all of it shows
+    viewport.camera().setTarget(glm::vec3(0.0f, 1.0f, 0.0f));
+    viewport.camera().setDistance(7.0f);
+    const QImage plain = viewport.grabViewport();
+    options.setProperty("contactPoints", true);
+    options.setProperty("aabbs", true);
+    const QImage overlaid = viewport.grabViewport();
+    QCOMPARE(overlaid.size(), plain.size());
+
+    OverlayRecorder world;
+    simcore::DebugDrawOptions everything;
+    everything.bodies = false;
+    everything.tightBounds = everything.contacts = everything.joints = true;
+    simulation.world()->draw(world, everything);
+    QCOMPARE(world.contacts.size(), std::size_t{4});
+    QCOMPARE(world.bounds.size(), std::size_t{3});
+    QCOMPARE(world.joints.size(), std::size_t{1});
+
+    const interplay::Camera& camera = viewport.camera();
+    const float w = float(overlaid.width()), h = float(overlaid.height());
+    const auto pink = [](QRgb c) { return qRed(c) > 200 && qGreen(c) < 110 && qBlue(c) > 80; };
+    const auto green = [](QRgb c) { return qGreen(c) > 160 && qRed(c) < 140 && qBlue(c) < 140; };
+    const auto dark = [](QRgb c) { return qRed(c) < 90 && qGreen(c) < 90 && qBlue(c) < 90; };
+    for (const simcore::DebugContactPoint& p : world.contacts) {
+        const glm::vec3 pixel = camera.project(p.point, w, h);
+        QVERIFY2(anyPixelNear(overlaid, pixel, 2, pink), "no contact cross at a contact point");
+        QVERIFY2(!anyPixelNear(plain, pixel, 2, pink), "a contact cross with the overlay off");
+    }
+    // The top edges of the moving bodies' bounds, at their middles, seen against the sky or floor.
+    for (std::size_t b = 1; b < world.bounds.size(); ++b) {
+        const simcore::Aabb& bounds = world.bounds[b];
+        const glm::vec3 edge(bounds.center().x, bounds.max.y, bounds.max.z);
+        const glm::vec3 pixel = camera.project(edge, w, h);
+        QVERIFY2(anyPixelNear(overlaid, pixel, 2, green), "no bounds edge where the world's bounds are");
+        QVERIFY2(!anyPixelNear(plain, pixel, 2, green), "a bounds edge with the overlay off");
+    }
+    const glm::vec3 anchor = camera.project(world.joints[0].anchorA, w, h);
+    QVERIFY(glm::length(world.joints[0].anchorA - hang.joint.anchor) < 1e-3f);
+    QVERIFY2(anyPixelNear(plain, anchor, 2, dark), "no joint cross at the joint's anchor");
 }
 
 namespace {

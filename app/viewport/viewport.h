@@ -1,43 +1,30 @@
 #pragma once
 // The 3D view of the running world: lit, shadowed bodies over a ground grid and a sky gradient,
-// seen through an orbit camera (with a fly mode on the right mouse button and WASD). Draws the
-// document's selection outlined (selected joints in the selection colour, anchors and axis
-// marked), sleeping bodies tinted and the debug overlays (bounds, contact points and normals). Mouse interaction:
-//   left click            select the joint whose anchor (or distance rod) is within a few
-//                         pixels, else the body under the cursor (ray cast through simcore);
-//                         a joint of that body hidden inside it takes a click on the body once
-//                         the body alone is selected; Ctrl/Shift-click adds or removes it; a
-//                         click on nothing clears
-//   left drag on a body   paused: move the selection on a horizontal plane (one undo entry);
-//                         with Alt: turn it about the vertical; playing: pull it with a spring
-//   left drag elsewhere   orbit;  Shift or middle drag: pan;  wheel: zoom
-//   right drag + WASDQE   fly (Shift: faster)
-// GL resources live as long as the widget's context (released on aboutToBeDestroyed, as in Qt's
-// hellogl2 example).
+// seen through an orbit camera. Draws the document's selection outlined (selected joints in the
+// selection colour, anchors and axis marked), sleeping bodies tinted and the debug overlays
+// (bounds, contact points and normals). The widget wires three parts together: everything it
+// draws comes from World::draw (BodyBatches gathers the bodies, DebugOverlay the lines), the
+// Renderer draws it, and the SelectionTool handles mouse and keys (see selection_tool.h for the
+// gestures). GL resources live as long as the widget's context (released on aboutToBeDestroyed,
+// as in Qt's hellogl2 example).
 
+#include "app/viewport/body_batches.h"
 #include "app/viewport/camera.h"
+#include "app/viewport/renderer.h"
+#include "app/viewport/selection_tool.h"
 
-#include "simcore/io/scene.h"
+#include "simcore/world/world.h"  // WorldRayHit
 
 #include <QElapsedTimer>
 #include <QImage>
-#include <QOpenGLExtraFunctions>
 #include <QOpenGLWidget>
-#include <QPoint>
-#include <QSet>
 #include <QSurfaceFormat>
-#include <QTimer>
 
 #include <glm/glm.hpp>
 
 #include <deque>
-#include <map>
-#include <memory>
 #include <optional>
-#include <tuple>
-#include <vector>
-
-class QOpenGLShaderProgram;
+#include <utility>
 
 namespace interplay {
 
@@ -45,7 +32,7 @@ class DebugDrawOptions;
 class SceneDocument;
 class SimulationController;
 
-class Viewport : public QOpenGLWidget, protected QOpenGLExtraFunctions {
+class Viewport : public QOpenGLWidget {
     Q_OBJECT
 
 public:
@@ -88,11 +75,6 @@ public:
     // Frames drawn during the last second.
     int framesPerSecond() const { return static_cast<int>(m_frameTimes.size()); }
 
-    // Colour a body is drawn with (linear RGB): the authored one, else a neutral grey for static
-    // bodies and a palette colour picked by scene index for the others.
-    static glm::vec3 displayColor(std::size_t sceneIndex, const std::optional<glm::vec3>& authored,
-                                  simcore::MotionType motion);
-
     // What the viewport's shaders need: GL 3.3 core, 24-bit depth, stencil, 4x MSAA. Set it as the
     // default format before the application creates any window (see main()).
     static QSurfaceFormat requiredSurfaceFormat();
@@ -115,56 +97,8 @@ protected:
     void focusOutEvent(QFocusEvent* event) override;
 
 private:
-    struct GpuMesh {
-        unsigned vao = 0, vbo = 0, ibo = 0;
-        int indexCount = 0;
-        // Keeps a hull alive while its address is part of a cache key, so the address cannot be
-        // reused by another hull.
-        std::shared_ptr<const simcore::ConvexHull> hull;
-    };
-    // Bodies with equal shapes share one mesh (a thousand cubes are one upload).
-    using MeshKey = std::tuple<int, float, float, float, float, float, const void*>;
-    struct BodyDraw {
-        simcore::BodyId id;
-        int sceneIndex = -1;
-        int mesh = -1;
-        glm::vec3 color{1.0f};
-        glm::vec3 localCenter{0.0f};     // of the shape's local bounds (m), for the outline
-        glm::vec3 localHalfSize{0.5f};   // of the shape's local bounds (m)
-    };
-    struct OverlayVertex {
-        glm::vec3 position;
-        glm::vec3 color;  // linear RGB
-    };
-    // Where a joint of the running world holds its bodies now (m): its point on body A, its point
-    // on body B (apart for a distance joint, a sliding slider or a strained joint) and its axis.
-    struct JointAnchors {
-        glm::vec3 onA, onB;
-        glm::vec3 axis;  // unit; a hinge's or slider's, on body A
-    };
-
-    // Mouse gesture in progress.
-    enum class Drag { None, Orbit, Pan, Fly, MoveBodies, RotateBodies, Grab };
-
     void cleanup();
-    void releaseMeshes();
-    void rebuildDrawList();
-    int meshFor(const simcore::Shape& shape);
     void applyPendingFrame();
-    void createShadowMap();
-    void drawBodies(QOpenGLShaderProgram& program, bool shadowPass);
-    void drawSelectionOutline(const glm::mat4& viewProjection);
-    void drawOverlays(const glm::mat4& viewProjection);
-    std::vector<OverlayVertex> overlayLines() const;
-    // Scene joint `sceneIndex` as the running world holds it; none if it is not in the world.
-    std::optional<JointAnchors> jointAnchors(std::size_t sceneIndex) const;
-    // Light-space box around the bodies worth shadowing.
-    glm::mat4 lightViewProjection() const;
-
-    void pressOnBody(QMouseEvent* event, const simcore::WorldRayHit& hit, int sceneIndex);
-    void dragBodies(const QPointF& position);
-    std::optional<glm::vec3> dragPlanePoint(const QPointF& pixel) const;
-    void flyTick();
 
     SimulationController* m_simulation = nullptr;
     SceneDocument* m_document = nullptr;
@@ -172,42 +106,10 @@ private:
     Camera m_camera;
     bool m_framePending = true;
 
-    // GL state (valid between initializeGL and cleanup).
-    bool m_glReady = false;
-    QOpenGLShaderProgram* m_bodyProgram = nullptr;
-    QOpenGLShaderProgram* m_shadowProgram = nullptr;
-    QOpenGLShaderProgram* m_skyProgram = nullptr;
-    QOpenGLShaderProgram* m_gridProgram = nullptr;
-    QOpenGLShaderProgram* m_flatProgram = nullptr;  // one colour per draw (selection outline)
-    QOpenGLShaderProgram* m_lineProgram = nullptr;  // per-vertex colour (overlays)
-    unsigned m_emptyVao = 0;  // core profile needs a bound VAO even for attribute-less draws
-    unsigned m_overlayVao = 0, m_overlayVbo = 0;
-    unsigned m_shadowFbo = 0;
-    unsigned m_shadowTexture = 0;
-    std::vector<GpuMesh> m_meshes;
-    std::map<MeshKey, int> m_meshIndex;
-    std::vector<BodyDraw> m_draws;
-    bool m_drawListDirty = true;
-
-    Drag m_drag = Drag::None;
-    QPoint m_lastMouse;
-    QPoint m_pressMouse;
-    bool m_dragMoved = false;           // the mouse travelled since the press (not a click)
-    int m_clickedBody = -1;             // scene body under the press, for click-to-select on release
-    int m_clickedJoint = -1;            // scene joint under the press (takes the click from bodies)
-    int m_jointInPressedBody = -1;      // a joint under the press whose point the pressed body hides
-    bool m_pressedBodyWasSelected = false;
-    Qt::KeyboardModifiers m_pressModifiers;
-    float m_dragPlaneHeight = 0.0f;     // y of the horizontal plane bodies move on (m)
-    glm::vec3 m_dragStart{0.0f};        // where the drag plane was first hit (m)
-    std::vector<simcore::SceneBody> m_dragStartBodies;  // the selection as it was at the press
-    QList<int> m_dragIndices;
-    bool m_dragPushed = false;          // the drag has pushed its first command (the rest merge)
-    float m_grabDepth = 0.0f;           // grab: distance along the view ray kept while dragging (m)
-
-    QSet<int> m_flyKeys;
-    QTimer m_flyTimer;
-    QElapsedTimer m_flyClock;
+    Renderer m_renderer;       // GL state, valid between initializeGL and cleanup
+    BodyBatches m_bodies;
+    bool m_bodiesDirty = true;  // the world was rebuilt or its bodies edited: meshes and colours to redo
+    SelectionTool m_tool{*this};
 
     std::deque<qint64> m_frameTimes;  // ms timestamps of the frames of the last second
     QElapsedTimer m_frameClock;

@@ -20,6 +20,9 @@
 
 namespace simcore {
 
+class DebugDraw;
+struct DebugDrawOptions;
+
 // Which effects actually ran, counted over steps (an effect that is enabled but not needed by
 // anything in the world is skipped and not counted).
 struct EffectUsage {
@@ -166,6 +169,9 @@ public:
     // Closest body hit by the ray origin + t * direction, t in [0, maxFraction]. Rays starting
     // inside a body do not hit it. Candidates come from the broad phase.
     std::optional<WorldRayHit> castRay(const Vec3& origin, const Vec3& direction, float maxFraction = 1.0f) const;
+
+    // Hands the bodies, bounds, contacts and joints the options ask for to `drawer` (debug_draw.h).
+    void draw(DebugDraw& drawer, const DebugDrawOptions& options) const;
 
     const StepProfile& lastStepProfile() const { return lastProfile_; }
     const EffectUsage& effectUsage() const { return effectUsage_; }

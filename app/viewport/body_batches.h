@@ -1,0 +1,59 @@
+#pragma once
+// The bodies of the running world as the renderer draws them: each body's mesh and colour, chosen
+// when the world is (re)built, and each frame the instances gathered from World::draw's body
+// callbacks, batched by mesh, with the selected bodies to outline.
+
+#include "app/viewport/renderer.h"
+
+#include "simcore/world/debug_draw.h"
+
+#include <QList>
+
+#include <functional>
+#include <optional>
+#include <vector>
+
+namespace interplay {
+
+class SimulationController;
+
+class BodyBatches : public simcore::DebugDraw {
+public:
+    // What each body of the controller's world is drawn with; `meshFor` uploads a shape's mesh.
+    void rebuild(const SimulationController& simulation, const std::function<int(const simcore::Shape&)>& meshFor);
+    void clear();
+    bool empty() const { return m_draws.empty(); }
+
+    // Starts a frame: the instances of the last one are dropped. `selectedBodies` are scene
+    // indices; sleeping dynamic bodies are tinted when `tintSleeping`.
+    void beginFrame(std::size_t meshCount, const QList<int>& selectedBodies, bool tintSleeping);
+    void drawBody(const simcore::DebugBody& body) override;
+
+    const std::vector<std::vector<BodyInstance>>& instancesByMesh() const { return m_instancesByMesh; }
+    const std::vector<OutlinedBody>& outlined() const { return m_outlined; }
+
+    // Colour a body is drawn with (linear RGB): the authored one, else a neutral grey for static
+    // bodies and a palette colour picked by scene index for the others.
+    static glm::vec3 displayColor(std::size_t sceneIndex, const std::optional<glm::vec3>& authored,
+                                  simcore::MotionType motion);
+
+private:
+    struct BodyDraw {
+        simcore::BodyId id;
+        int sceneIndex = -1;  // -1 for a body thrown in while running
+        int mesh = -1;
+        glm::vec3 color{1.0f};
+        glm::vec3 localCenter{0.0f};    // of the shape's local bounds (m), for the outline
+        glm::vec3 localHalfSize{0.5f};  // of the shape's local bounds (m)
+    };
+    const BodyDraw* drawOf(simcore::BodyId id) const;
+
+    std::vector<BodyDraw> m_draws;
+    std::vector<int> m_drawOfSlot;  // by BodyId::index: index into m_draws, or -1
+    std::vector<std::vector<BodyInstance>> m_instancesByMesh;
+    std::vector<OutlinedBody> m_outlined;
+    QList<int> m_selectedBodies;
+    bool m_tintSleeping = true;
+};
+
+}  // namespace interplay

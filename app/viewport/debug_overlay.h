@@ -1,0 +1,66 @@
+#pragma once
+// The debug overlay: a DebugDraw that turns what World::draw emits into coloured lines over the
+// bodies: bounds, contact points and normals (as the DebugDrawOptions ask), the joints (always:
+// a rod or a hinge pin, a small cross at each live anchor; selected joints in the selection colour
+// with their anchors marked large and their axis drawn) and the grab spring.
+
+#include "app/viewport/renderer.h"
+
+#include "simcore/world/debug_draw.h"
+
+#include <QList>
+
+#include <optional>
+#include <utility>
+#include <vector>
+
+namespace interplay {
+
+class DebugDrawOptions;
+
+// The running world's joints by scene index (jointIds[i] is the world joint made from scene joint
+// i), gathered from World::draw; none where the world does not hold the scene's joint.
+class SceneJoints : public simcore::DebugDraw {
+public:
+    explicit SceneJoints(const std::vector<simcore::JointId>& jointIds);
+    void drawJoint(const simcore::DebugJoint& joint) override;
+    const std::vector<std::optional<simcore::DebugJoint>>& bySceneIndex() const { return m_bySceneIndex; }
+
+    // The options that make World::draw emit the joints only.
+    static simcore::DebugDrawOptions jointsOnly();
+
+private:
+    const std::vector<simcore::JointId>& m_jointIds;
+    std::vector<int> m_sceneIndexOfSlot;  // by JointId::index, -1 where no scene joint
+    std::vector<std::optional<simcore::DebugJoint>> m_bySceneIndex;
+};
+
+class DebugOverlay : public simcore::DebugDraw {
+public:
+    // `options` may be null (overlays off, the joints still drawn).
+    DebugOverlay(const DebugDrawOptions* options, const std::vector<simcore::JointId>& jointIds);
+
+    // What World::draw must emit for this overlay.
+    simcore::DebugDrawOptions worldOptions() const;
+
+    void drawBounds(simcore::BodyId body, const simcore::Aabb& box, simcore::DebugBoundsKind kind) override;
+    void drawContactPoint(const simcore::DebugContactPoint& point) override;
+    void drawJoint(const simcore::DebugJoint& joint) override { m_joints.drawJoint(joint); }
+
+    // After World::draw: the lines, joints last (in scene order) and then the grab spring, if any.
+    std::vector<OverlayVertex> finish(const QList<int>& selectedJoints,
+                                      const std::optional<std::pair<glm::vec3, glm::vec3>>& grabLine);
+
+private:
+    void addLine(const glm::vec3& a, const glm::vec3& b, const glm::vec3& color);
+    // Three axis-aligned strokes through `point`, each 2 * halfSize long.
+    void addCross(const glm::vec3& point, float halfSize, const glm::vec3& color);
+
+    bool m_bounds = false;
+    bool m_contactPoints = false;
+    bool m_contactNormals = false;
+    SceneJoints m_joints;
+    std::vector<OverlayVertex> m_lines;
+};
+
+}  // namespace interplay
