@@ -1064,7 +1064,7 @@ void TestMainWindow::qmlPanelLoadsAndChangesTheWorld() {
     };
 
     // The substeps spin box's "up" indicator: one more substep, in the document and the world.
-    auto* substeps = findItem(quick->rootObject(), "substepsSpinBox");
+    auto* substeps = findItem(quick->rootObject(), "setting_substeps");
     QVERIFY(substeps);
     const int before = m_window->document()->scene().settings.substeps;
     QCOMPARE(substeps->property("value").toInt(), before);
@@ -1080,7 +1080,7 @@ void TestMainWindow::qmlPanelLoadsAndChangesTheWorld() {
     QCOMPARE(m_window->simulation()->world()->settings().substeps, before);
 
     // An effect check box switches the effect off in the running world.
-    auto* friction = findItem(quick->rootObject(), "effect_friction");
+    auto* friction = findItem(quick->rootObject(), "setting_effects.friction");
     QVERIFY(friction);
     QVERIFY(friction->property("checked").toBool());
     clickItem(friction, QPointF(friction->height() / 2, friction->height() / 2));
