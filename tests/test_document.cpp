@@ -863,14 +863,14 @@ void TestDocument::inspectorRejectsBadJointInput_data() {
               distance = int(simcore::JointType::Distance);
     QTest::newRow("NaN anchor") << hinge << "" << "anchor.x" << "nan" << "not a number";
     QTest::newRow("infinite anchor") << hinge << "" << "anchor.z" << "-inf" << "not a number";
-    QTest::newRow("zero axis") << hinge << "" << "axis.z" << "0" << "axis must be";  // x and y are 0 already
+    QTest::newRow("zero axis") << hinge << "" << "axis.z" << "0" << "axis must not be zero";  // x and y are 0 already
     QTest::newRow("hinge limit beyond 180°") << hinge << "limits" << "hingeUpper" << "200" << "between";
-    QTest::newRow("lower above upper") << hinge << "limits" << "hingeLower" << "50" << "lower must not exceed";
+    QTest::newRow("lower above upper") << hinge << "limits" << "hingeLower" << "50" << "exceeds upper";
     QTest::newRow("negative torque") << hinge << "motor" << "hingeMaxTorque" << "-1" << "between";
     QTest::newRow("text speed") << slider << "motor" << "sliderMotorSpeed" << "quick" << "not a number";
-    QTest::newRow("slider lower above upper") << slider << "limits" << "sliderLower" << "2" << "lower must not exceed";
-    QTest::newRow("zero spring frequency") << distance << "spring" << "springHertz" << "0" << "between";
-    QTest::newRow("minimum above maximum") << distance << "lengths" << "minLength" << "100" << "minLength must not exceed";
+    QTest::newRow("slider lower above upper") << slider << "limits" << "sliderLower" << "2" << "exceeds upper";
+    QTest::newRow("zero spring frequency") << distance << "spring" << "springHertz" << "0" << "hertz must be positive";
+    QTest::newRow("minimum above maximum") << distance << "lengths" << "minLength" << "100" << "exceeds maxLength";
 }
 
 void TestDocument::inspectorRejectsBadJointInput() {
