@@ -26,14 +26,19 @@ bool NumberRange::contains(double value) const {
 }
 
 std::string NumberRange::describe() const {
-    std::string text = (minExclusive ? "(" : "[") + formatNumber(min) + ", " + formatNumber(max) + "]";
-    if (!unit.empty()) text += " " + std::string(unit);
+    std::string text(minExclusive ? "(" : "[");
+    text += formatNumber(min);
+    text += ", ";
+    text += formatNumber(max);
+    text += ']';
+    if (!unit.empty()) (text += ' ') += unit;
     return text;
 }
 
 std::optional<std::string> rangeProblem(std::string_view label, double value, const NumberRange& range) {
     const std::string name(label);
-    const std::string unit = range.unit.empty() ? std::string() : " " + std::string(range.unit);
+    std::string unit;  // " m/s", or nothing
+    if (!range.unit.empty()) (unit += ' ') += range.unit;
     const std::string got = ", got " + formatNumber(value);
     const std::string between = name + " must be between " + formatNumber(range.min) + " and " + formatNumber(range.max) + unit + got;
     if (!std::isfinite(value)) return name + " must be a finite number";
@@ -81,35 +86,6 @@ std::string SettingInfo::choiceList() const {
 std::string_view SettingInfo::name() const {
     const std::size_t dot = key.rfind('.');
     return dot == std::string_view::npos ? key : key.substr(dot + 1);
-}
-
-std::optional<std::string> SettingInfo::problem(const SettingValue& value) const {
-    const std::string label(name());
-    switch (type) {
-        case SettingType::Bool:
-            if (!std::holds_alternative<bool>(value)) return label + ": expected true or false";
-            return std::nullopt;
-        case SettingType::Int:
-            if (!std::holds_alternative<int>(value)) return label + ": expected an integer";
-            return integerRangeProblem(label, std::get<int>(value), range);
-        case SettingType::Choice: {
-            const int* index = std::get_if<int>(&value);
-            if (!index || *index < 0 || *index >= static_cast<int>(choices.size()))
-                return label + ": expected one of its choices";
-            return std::nullopt;
-        }
-        case SettingType::Float:
-            if (!std::holds_alternative<float>(value)) return label + ": expected a number";
-            return rangeProblem(label, std::get<float>(value), range);
-        case SettingType::Vec3: {
-            const Vec3* v = std::get_if<Vec3>(&value);
-            if (!v) return label + ": expected a vector [x, y, z]";
-            for (int i = 0; i < 3; ++i)
-                if (auto why = rangeProblem(label + "[" + std::to_string(i) + "]", (*v)[i], range)) return why;
-            return std::nullopt;
-        }
-    }
-    return std::nullopt;
 }
 
 namespace {

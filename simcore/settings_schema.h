@@ -60,7 +60,7 @@ inline constexpr NumberRange kMotorForce{0.0, 1e12, false, "N or N m"};
 inline constexpr NumberRange kJointLength{0.0, 1e6, false, "m"};
 inline constexpr NumberRange kSpringHertz{0.0, 1e4, true, "Hz"};
 inline constexpr NumberRange kDampingRatio{0.0, 1e4};
-inline constexpr std::size_t kMinHullPoints = 4, kMaxHullPoints = 4096;
+inline constexpr std::size_t kMaxHullPoints = 4096;
 }  // namespace limits
 
 // ---- world settings ----
@@ -88,9 +88,6 @@ struct SettingInfo {
     std::string choiceList() const;
     // The part of `key` after the last dot: what the loader's messages call it.
     std::string_view name() const;
-    // Why `value` cannot be this setting's (wrong type, out of range, non-finite, unknown choice),
-    // with the loader's wording; nothing when it is acceptable.
-    std::optional<std::string> problem(const SettingValue& value) const;
 };
 
 // Every WorldSettings field, in the order a saved file writes them. `preset` (quality_preset.h) is

@@ -831,8 +831,9 @@ std::optional<std::string> applySettingOverride(Scene& scene, std::string_view a
         return std::nullopt;
     }
 
-    // Work on the settings as they would be saved, so every key the file format has can be set,
-    // and the new value goes through exactly the validation a file would.
+    // Work on the settings as they would be saved (every schema key, written by the schema's loop),
+    // so exactly the schema's keys, their sections and vector components can be set, and the new
+    // value goes through the validation a file would.
     Json settings = Json::parse(settingsJson(scene.settings).dump());
     Json* node = &settings;
     std::size_t start = 0;
