@@ -21,6 +21,7 @@
 #include "app/viewport/viewport.h"
 
 #include "simcore/io/scene_io.h"
+#include "simcore/settings_schema.h"
 #include "simcore/world/world.h"
 
 #include <QAction>
@@ -38,6 +39,7 @@
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
+#include <QStatusBar>
 #include <QSurfaceFormat>
 #include <QTemporaryDir>
 #include <QTest>
@@ -1062,6 +1064,27 @@ void TestMainWindow::qmlPanelLoadsAndChangesTheWorld() {
         const QPointF scene = item->mapToScene(at);
         QTest::mouseClick(quick, Qt::LeftButton, {}, scene.toPoint());
     };
+
+    // Every setting of the schema has its editor in the panel (a vector one per component).
+    for (const simcore::SettingInfo& info : simcore::settingsSchema()) {
+        const QString name = "setting_" + QString::fromLatin1(info.key.data(), static_cast<qsizetype>(info.key.size()));
+        if (info.type != simcore::SettingType::Vec3) QVERIFY2(findItem(quick->rootObject(), name), qPrintable(name));
+        for (int i = 0; info.type == simcore::SettingType::Vec3 && i < 3; ++i)
+            QVERIFY2(findItem(quick->rootObject(), name + "." + QString::number(i)), qPrintable(name));
+    }
+
+    // Typing a value the loader would refuse (the bug report's gravity 1e9) changes nothing and says why.
+    auto* gravityY = findItem(quick->rootObject(), "setting_gravity.1");
+    QVERIFY(gravityY);
+    const float gravityBefore = m_window->document()->scene().settings.gravity.y;
+    const int entriesBefore = m_window->document()->undoStack()->count();
+    gravityY->setProperty("text", "1e9");
+    QVERIFY(QMetaObject::invokeMethod(gravityY, "editingFinished"));
+    QCOMPARE(m_window->document()->scene().settings.gravity.y, gravityBefore);
+    QCOMPARE(m_window->document()->undoStack()->count(), entriesBefore);
+    QVERIFY2(m_window->statusBar()->currentMessage().contains("gravity[1] must be between -10000 and 10000"),
+             qPrintable(m_window->statusBar()->currentMessage()));
+    QCOMPARE(gravityY->property("text").toString(), QString::number(double(gravityBefore)));
 
     // The substeps spin box's "up" indicator: one more substep, in the document and the world.
     auto* substeps = findItem(quick->rootObject(), "setting_substeps");
