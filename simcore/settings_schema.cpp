@@ -206,11 +206,15 @@ constexpr SettingInfo kSettings[] = {
 #undef SIMCORE_MEMBER
 #undef SIMCORE_EFFECT
 
-constexpr std::size_t kFirstEffect = 23;
-static_assert(std::size(kSettings) == kFirstEffect + kEffectCount, "one row per WorldSettings field");
+// The effect rows come last, one per Effect, in its order and keyed by its name.
 constexpr bool effectRowsMatchEffects() {
-    for (std::size_t i = 0; i < kEffectNames.size(); ++i)
-        if (kSettings[kFirstEffect + i].key.substr(std::string_view("effects.").size()) != kEffectNames[i]) return false;
+    constexpr std::string_view kPrefix = "effects.";
+    const std::size_t first = std::size(kSettings) - kEffectNames.size();
+    for (std::size_t i = 0; i < std::size(kSettings); ++i) {
+        const bool isEffect = kSettings[i].key.starts_with(kPrefix);
+        if (isEffect != (i >= first)) return false;
+        if (isEffect && kSettings[i].key.substr(kPrefix.size()) != kEffectNames[i - first]) return false;
+    }
     return true;
 }
 static_assert(effectRowsMatchEffects(), "effect rows in Effect's order, keyed by effectName");
