@@ -278,6 +278,14 @@ void TestSettingsSchema::writerAndPanelKnowExactlyTheSchemaKeys() {
     interplay::SimulationSettingsModel model(&document);
     QCOMPARE(model.keys(), schemaKeys);
     QCOMPARE(model.rowCount(), static_cast<int>(schemaKeys.size()));
+    // The panel heads each group once: the groups are contiguous, in SettingGroup's order.
+    int headings = 0;
+    for (std::size_t i = 0; i < simcore::settingsSchema().size(); ++i) {
+        const simcore::SettingInfo& info = simcore::settingsSchema()[i];
+        if (i > 0) QVERIFY2(simcore::settingsSchema()[i - 1].group <= info.group, info.key.data());
+        if (model.index(static_cast<int>(i)).data(interplay::SimulationSettingsModel::FirstInGroupRole).toBool()) ++headings;
+    }
+    QCOMPARE(headings, static_cast<int>(simcore::SettingGroup::Effects) + 1);
     // Every row has a group, a label, a doc line, and a range when it is a number.
     for (int row = 0; row < model.rowCount(); ++row) {
         const QModelIndex index = model.index(row);
