@@ -24,7 +24,6 @@
 
 #include <cmath>
 #include <cstdlib>
-#include <exception>
 #include <type_traits>
 
 namespace interplay {
@@ -32,7 +31,7 @@ namespace {
 
 // Accepted ranges: the scene format's (simcore/settings_schema.h), so the editor lets in nothing a
 // file would refuse on load. Each field names the schema properties it edits (its "schemaKeys"),
-// which test_document checks against the schema.
+// which test_settings_schema checks against the schema.
 using simcore::PropertyOwner;
 const simcore::NumberRange& range(PropertyOwner owner, std::string_view key) {
     return simcore::propertyRange(owner, key);
