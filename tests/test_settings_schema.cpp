@@ -301,6 +301,14 @@ void TestSettingsSchema::writerAndPanelKnowExactlyTheSchemaKeys() {
 void TestSettingsSchema::inspectorFieldsUseTheSchemaRanges() {
     interplay::SceneDocument document;
     interplay::InspectorPanel inspector(&document);
+    const auto rangeOf = [](const QString& qualified) -> std::optional<simcore::NumberRange> {
+        for (const simcore::PropertyInfo& p : simcore::propertySchema()) {
+            const QString name = QString::fromLatin1(simcore::propertyOwnerName(p.owner).data()) + "." +
+                                 QString::fromLatin1(p.key.data(), static_cast<qsizetype>(p.key.size()));
+            if (name == qualified) return p.range;
+        }
+        return std::nullopt;
+    };
     QSet<QString> edited;
     for (const interplay::NumberField* field : inspector.findChildren<interplay::NumberField*>()) {
         const QStringList keys = field->property("schemaKeys").toStringList();
@@ -310,6 +318,20 @@ void TestSettingsSchema::inspectorFieldsUseTheSchemaRanges() {
         }
         QVERIFY2(!keys.isEmpty(), qPrintable(field->objectName()));
         for (const QString& key : keys) edited << key;
+        if (keys.first().startsWith("hinge.limits.")) continue;  // shown in degrees
+        // The field takes exactly its property's range (both ends; an exclusive end the loader refuses).
+        const std::optional<simcore::NumberRange> range = rangeOf(keys.first());
+        QVERIFY2(range, qPrintable(keys.first()));
+        // One field for several properties (a radius of three shapes) needs them to agree; the mass
+        // field switches to density's range when the body gives a density (test_document).
+        if (field->objectName() != "mass")
+            for (const QString& key : keys)
+                QVERIFY2(rangeOf(key)->min == range->min && rangeOf(key)->max == range->max, qPrintable(key));
+        const auto accepts = [&](double v) { return std::holds_alternative<double>(field->parse(QString::number(v, 'g', 17))); };
+        const double inf = std::numeric_limits<double>::infinity();
+        QVERIFY2(accepts(range->min) && accepts(range->max), qPrintable(field->objectName()));
+        QVERIFY2(!accepts(std::nextafter(range->min, -inf)) && !accepts(std::nextafter(range->max, inf)),
+                 qPrintable(field->objectName()));
     }
     QSet<QString> numeric;
     for (const simcore::PropertyInfo& p : simcore::propertySchema()) {
