@@ -5,7 +5,7 @@
 //   debugDraw      what the viewport overlays (DebugDrawOptions); a view preference, not an edit
 // The settings' rows come from the model (one per schema setting), so a new setting needs nothing
 // here. Controls write on user interaction only (onValueModified, onToggled, onActivated,
-// onCommitted, onMoved), so updates coming from the model (undo, open) never echo back as edits.
+// onCommitted, onMoved, a label's drag), so updates from the model (undo, open) never echo back.
 import QtQuick
 import QtQuick.Controls.Fusion
 import QtQuick.Layouts
@@ -16,6 +16,19 @@ Pane {
 
     // Units as people write them: m/s² rather than the files' and messages' m/s^2.
     function pretty(text) { return text.replace("^2", "²").replace("^3", "³") }
+
+    // A scrubbed value `dx` pixels from where the drag started: integers one per 8 px, numbers by
+    // half a percent of their size (or of a thousandth of their range, from zero) per pixel,
+    // vectors scaled by e^(dx / 200). Values outside the setting's range are skipped, not sent.
+    function scrub(field, start, dx) {
+        let v
+        if (field.type === "int") v = start + Math.round(dx / 8)
+        else if (field.type === "vec3") v = start.map((c) => c * Math.exp(dx / 200))
+        else v = start + dx * 0.005 * Math.max(Math.abs(start), 1e-3 * (field.maximum - field.minimum))
+        const exclusive = field.range.startsWith("(")
+        const inside = (x) => x <= field.maximum && (exclusive ? x > field.minimum : x >= field.minimum)
+        if (field.type === "vec3" ? v.every(inside) : inside(v)) settingsModel.setValue(field.key, v)
+    }
 
     // A number field: shows `value`, commits on Enter or focus loss. Text that is not a number is
     // handed to the model too, which rejects it with a message (and the field shows the old value).
@@ -123,12 +136,30 @@ Pane {
                             RowLayout {
                                 Layout.fillWidth: true
                                 Label {
+                                    objectName: "label_" + field.key
                                     text: field.unit === "" ? field.label : field.label + " (" + root.pretty(field.unit) + ")"
                                     Layout.fillWidth: true
                                     elide: Text.ElideRight
                                     ToolTip.text: field.doc
-                                    ToolTip.visible: hover.hovered
-                                    HoverHandler { id: hover }
+                                    ToolTip.visible: hover.hovered && !scrub.active
+                                    HoverHandler {
+                                        id: hover
+                                        cursorShape: scrub.enabled ? Qt.SizeHorCursor : Qt.ArrowCursor
+                                    }
+                                    // Dragging a number's label sideways scrubs it (a vector scales):
+                                    // the model merges the whole drag into one history entry.
+                                    DragHandler {
+                                        id: scrub
+                                        target: null
+                                        enabled: field.type === "float" || field.type === "int" || field.type === "vec3"
+                                        yAxis.enabled: false
+                                        property var start
+                                        onActiveChanged: {
+                                            if (active) start = field.value
+                                            settingsModel.interacting = active
+                                        }
+                                        onTranslationChanged: if (active) root.scrub(field, start, translation.x)
+                                    }
                                 }
                                 Loader {
                                     Layout.preferredWidth: field.type === "vec3" ? 180 : field.type === "choice" ? 150 : 110

@@ -1051,8 +1051,8 @@ void TestMainWindow::qmlPanelLoadsAndChangesTheWorld() {
     dock->raise();
     QTRY_VERIFY(quick->isVisible() && quick->width() > 100);
 
-    const auto clickItem = [quick](QQuickItem* item, QPointF at) {
-        // Scroll the panel until the control is in view, as a user would.
+    // Scroll the panel until the control is in view, as a user would.
+    const auto scrollTo = [](QQuickItem* item) {
         for (QQuickItem* ancestor = item->parentItem(); ancestor; ancestor = ancestor->parentItem()) {
             if (!ancestor->inherits("QQuickFlickable")) continue;
             auto* content = qvariant_cast<QQuickItem*>(ancestor->property("contentItem"));
@@ -1061,6 +1061,9 @@ void TestMainWindow::qmlPanelLoadsAndChangesTheWorld() {
             break;
         }
         QTest::qWait(50);
+    };
+    const auto clickItem = [quick, scrollTo](QQuickItem* item, QPointF at) {
+        scrollTo(item);
         const QPointF scene = item->mapToScene(at);
         QTest::mouseClick(quick, Qt::LeftButton, {}, scene.toPoint());
     };
@@ -1085,6 +1088,21 @@ void TestMainWindow::qmlPanelLoadsAndChangesTheWorld() {
     QVERIFY2(m_window->statusBar()->currentMessage().contains("gravity[1] must be between -10000 and 10000"),
              qPrintable(m_window->statusBar()->currentMessage()));
     QCOMPARE(gravityY->property("text").toString(), QString::number(double(gravityBefore)));
+
+    // Dragging the gravity label sideways scales gravity: the whole drag is one history entry.
+    auto* gravityLabel = findItem(quick->rootObject(), "label_gravity");
+    QVERIFY(gravityLabel);
+    scrollTo(gravityLabel);
+    const QPoint from = gravityLabel->mapToScene(QPointF(10, gravityLabel->height() / 2)).toPoint();
+    QTest::mousePress(quick, Qt::LeftButton, {}, from);
+    for (int i = 1; i <= 10; ++i) QTest::mouseMove(quick, from + QPoint(8 * i, 0));
+    QTest::mouseRelease(quick, Qt::LeftButton, {}, from + QPoint(80, 0));
+    QTRY_VERIFY(m_window->document()->scene().settings.gravity.y < gravityBefore * 1.2f);
+    QCOMPARE(m_window->document()->undoStack()->count(), entriesBefore + 1);
+    QCOMPARE(m_window->document()->undoStack()->undoText(), QString("Change Gravity"));
+    QCOMPARE(m_window->simulation()->world()->settings().gravity, m_window->document()->scene().settings.gravity);
+    m_window->document()->undoStack()->undo();
+    QCOMPARE(m_window->document()->scene().settings.gravity.y, gravityBefore);
 
     // The substeps spin box's "up" indicator: one more substep, in the document and the world.
     auto* substeps = findItem(quick->rootObject(), "setting_substeps");
