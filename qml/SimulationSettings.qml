@@ -3,8 +3,9 @@
 //   settingsModel  the scene's world settings (SimulationSettingsModel); every change is undoable
 //   simulation     the running simulation (SimulationController): time scale
 //   debugDraw      what the viewport overlays (DebugDrawOptions); a view preference, not an edit
-// Controls write on user interaction only (onValueModified, onToggled, onActivated, onMoved), so
-// updates coming from the model (undo, open) never echo back as new edits.
+// The settings' rows come from the model (one per schema setting), so a new setting needs nothing
+// here. Controls write on user interaction only (onValueModified, onToggled, onActivated,
+// onCommitted, onMoved, a label's drag), so updates from the model (undo, open) never echo back.
 import QtQuick
 import QtQuick.Controls.Fusion
 import QtQuick.Layouts
@@ -13,9 +14,26 @@ Pane {
     id: root
     padding: 8
 
+    // Units as people write them: m/s² rather than the files' and messages' m/s^2.
+    function pretty(text) { return text.replace("^2", "²").replace("^3", "³") }
+
+    // A scrubbed value `dx` pixels from where the drag started: integers one per 8 px, numbers by
+    // half a percent of their size (or of a thousandth of their range, from zero) per pixel,
+    // vectors scaled by e^(dx / 200). Values outside the setting's range are skipped, not sent.
+    function scrub(field, start, dx) {
+        let v
+        if (field.type === "int") v = start + Math.round(dx / 8)
+        else if (field.type === "vec3") v = start.map((c) => c * Math.exp(dx / 200))
+        else v = start + dx * 0.005 * Math.max(Math.abs(start), 1e-3 * (field.maximum - field.minimum))
+        const exclusive = field.range.startsWith("(")
+        const inside = (x) => x <= field.maximum && (exclusive ? x > field.minimum : x >= field.minimum)
+        if (field.type === "vec3" ? v.every(inside) : inside(v)) settingsModel.setValue(field.key, v)
+    }
+
     // A number field: shows `value`, commits on Enter or focus loss. Text that is not a number is
     // handed to the model too, which rejects it with a message (and the field shows the old value).
     component NumberField: TextField {
+        id: numberField
         property real value: 0
         signal committed(real number)
         text: Number(value).toLocaleString(Qt.locale("C"), "g", 6)
@@ -24,8 +42,11 @@ Pane {
         Layout.fillWidth: true
         Layout.preferredWidth: 60
         onEditingFinished: {
-            const number = Number(text.trim())
-            committed(text.trim() === "" ? NaN : number)
+            const shown = Number(value).toLocaleString(Qt.locale("C"), "g", 6)
+            if (text.trim() !== shown) {  // tabbing through a field changes nothing
+                const number = Number(text.trim())
+                committed(text.trim() === "" ? NaN : number)
+            }
             text = Qt.binding(() => Number(value).toLocaleString(Qt.locale("C"), "g", 6))
         }
     }
@@ -59,162 +80,165 @@ Pane {
             }
 
             GroupBox {
-                title: qsTr("Time")
+                title: qsTr("Playback")
                 Layout.fillWidth: true
-                GridLayout {
+                RowLayout {
                     anchors.fill: parent
-                    columns: 2
-                    Label { text: qsTr("Steps per second") }
-                    SpinBox {
-                        objectName: "stepRateSpinBox"
-                        Layout.fillWidth: true
-                        from: 10; to: 2000; stepSize: 10
-                        editable: true
-                        value: Math.round(settingsModel.stepRate)
-                        onValueModified: settingsModel.stepRate = value
-                    }
-                    Label { text: qsTr("Substeps") }
-                    SpinBox {
-                        objectName: "substepsSpinBox"
-                        Layout.fillWidth: true
-                        from: 1; to: 64
-                        editable: true
-                        value: settingsModel.substeps
-                        onValueModified: settingsModel.substeps = value
-                    }
                     Label { text: qsTr("Time scale") }
-                    RowLayout {
-                        Slider {
-                            objectName: "timeScaleSlider"
-                            Layout.fillWidth: true
-                            from: 0.05; to: 2.0
-                            value: simulation.timeScale
-                            onMoved: simulation.timeScale = value
-                        }
-                        Label {
-                            text: simulation.timeScale.toFixed(2) + "×"
-                            Layout.preferredWidth: 40
-                        }
+                    Slider {
+                        objectName: "timeScaleSlider"
+                        Layout.fillWidth: true
+                        from: 0.05; to: 2.0
+                        value: simulation.timeScale
+                        onMoved: simulation.timeScale = value
+                    }
+                    Label {
+                        text: simulation.timeScale.toFixed(2) + "×"
+                        Layout.preferredWidth: 40
                     }
                 }
             }
 
+            // Every setting of simcore's schema, grouped as the model says: a row per setting with
+            // its label and unit, an editor for its type, and its accepted range underneath.
             GroupBox {
-                title: qsTr("Solver")
-                Layout.fillWidth: true
-                GridLayout {
-                    anchors.fill: parent
-                    columns: 2
-                    Label { text: qsTr("Velocity iterations") }
-                    SpinBox {
-                        objectName: "velocityIterationsSpinBox"
-                        Layout.fillWidth: true
-                        from: 1; to: 1000
-                        editable: true
-                        value: settingsModel.velocityIterations
-                        onValueModified: settingsModel.velocityIterations = value
-                    }
-                    Label { text: qsTr("Position iterations") }
-                    SpinBox {
-                        objectName: "positionIterationsSpinBox"
-                        Layout.fillWidth: true
-                        from: 0; to: 1000
-                        editable: true
-                        value: settingsModel.positionIterations
-                        onValueModified: settingsModel.positionIterations = value
-                    }
-                    Label { text: qsTr("Position correction") }
-                    ComboBox {
-                        objectName: "positionCorrectionComboBox"
-                        Layout.fillWidth: true
-                        model: settingsModel.positionCorrectionNames
-                        currentIndex: settingsModel.positionCorrection
-                        onActivated: (index) => settingsModel.positionCorrection = index
-                    }
-                    Label { text: qsTr("Integrator") }
-                    ComboBox {
-                        objectName: "integratorComboBox"
-                        Layout.fillWidth: true
-                        model: settingsModel.integratorNames
-                        currentIndex: settingsModel.integrator
-                        onActivated: (index) => settingsModel.integrator = index
-                    }
-                }
-            }
-
-            GroupBox {
-                title: qsTr("Gravity (m/s²)")
+                title: qsTr("World settings")
                 Layout.fillWidth: true
                 ColumnLayout {
                     anchors.fill: parent
-                    RowLayout {
-                        Label { text: "x" }
-                        NumberField {
-                            objectName: "gravityXField"
-                            value: settingsModel.gravityX
-                            onCommitted: (number) => settingsModel.setGravity(number, settingsModel.gravityY, settingsModel.gravityZ)
-                        }
-                        Label { text: "y" }
-                        NumberField {
-                            objectName: "gravityYField"
-                            value: settingsModel.gravityY
-                            onCommitted: (number) => settingsModel.setGravity(settingsModel.gravityX, number, settingsModel.gravityZ)
-                        }
-                        Label { text: "z" }
-                        NumberField {
-                            objectName: "gravityZField"
-                            value: settingsModel.gravityZ
-                            onCommitted: (number) => settingsModel.setGravity(settingsModel.gravityX, settingsModel.gravityY, number)
-                        }
-                    }
-                    // Dragging the slider is one undo entry: the model merges while interacting.
-                    Slider {
-                        objectName: "gravityYSlider"
-                        Layout.fillWidth: true
-                        from: -20; to: 0
-                        value: settingsModel.gravityY
-                        onPressedChanged: settingsModel.interacting = pressed
-                        onMoved: settingsModel.setGravity(settingsModel.gravityX, value, settingsModel.gravityZ)
-                    }
-                }
-            }
-
-            GroupBox {
-                title: qsTr("Damping (1/s)")
-                Layout.fillWidth: true
-                GridLayout {
-                    anchors.fill: parent
-                    columns: 4
-                    Label { text: qsTr("Linear") }
-                    NumberField {
-                        objectName: "linearDampingField"
-                        value: settingsModel.linearDamping
-                        onCommitted: (number) => settingsModel.linearDamping = number
-                    }
-                    Label { text: qsTr("Angular") }
-                    NumberField {
-                        objectName: "angularDampingField"
-                        value: settingsModel.angularDamping
-                        onCommitted: (number) => settingsModel.angularDamping = number
-                    }
-                }
-            }
-
-            GroupBox {
-                title: qsTr("Effects")
-                Layout.fillWidth: true
-                GridLayout {
-                    anchors.fill: parent
-                    columns: 3
+                    spacing: 2
                     Repeater {
-                        model: settingsModel.effectNames
-                        CheckBox {
-                            required property int index
-                            required property string modelData
-                            objectName: "effect_" + modelData
-                            text: modelData
-                            checked: settingsModel.effects[index]
-                            onToggled: settingsModel.setEffect(index, checked)
+                        model: settingsModel
+                        delegate: ColumnLayout {
+                            id: field
+                            required property string key
+                            required property string group
+                            required property bool firstInGroup
+                            required property string label
+                            required property string unit
+                            required property string doc
+                            required property string type
+                            required property var minimum
+                            required property var maximum
+                            required property string range
+                            required property var value
+                            required property var choices
+                            Layout.fillWidth: true
+                            spacing: 0
+
+                            Label {
+                                visible: field.firstInGroup
+                                text: field.group
+                                font.bold: true
+                                topPadding: 6
+                                bottomPadding: 2
+                            }
+                            RowLayout {
+                                Layout.fillWidth: true
+                                Label {
+                                    objectName: "label_" + field.key
+                                    text: field.unit === "" ? field.label : field.label + " (" + root.pretty(field.unit) + ")"
+                                    Layout.fillWidth: true
+                                    elide: Text.ElideRight
+                                    ToolTip.text: field.doc
+                                    ToolTip.visible: hover.hovered && !scrub.active
+                                    HoverHandler {
+                                        id: hover
+                                        cursorShape: scrub.enabled ? Qt.SizeHorCursor : Qt.ArrowCursor
+                                    }
+                                    // Dragging a number's label sideways scrubs it (a vector scales):
+                                    // the model merges the whole drag into one history entry.
+                                    DragHandler {
+                                        id: scrub
+                                        target: null
+                                        enabled: field.type === "float" || field.type === "int" || field.type === "vec3"
+                                        yAxis.enabled: false
+                                        property var start
+                                        onActiveChanged: {
+                                            if (active) start = field.value
+                                            settingsModel.interacting = active
+                                        }
+                                        onTranslationChanged: if (active) root.scrub(field, start, translation.x)
+                                    }
+                                }
+                                Loader {
+                                    Layout.preferredWidth: field.type === "vec3" ? 180 : field.type === "choice" ? 150 : 110
+                                    sourceComponent: field.type === "bool" ? boolEditor
+                                                   : field.type === "choice" ? choiceEditor
+                                                   : field.type === "int" ? intEditor
+                                                   : field.type === "vec3" ? vectorEditor : floatEditor
+                                }
+                            }
+                            Label {
+                                visible: field.range !== ""
+                                text: root.pretty(field.range)
+                                font.pointSize: Qt.application.font.pointSize * 0.85
+                                opacity: 0.6
+                                Layout.alignment: Qt.AlignRight
+                            }
+
+                            Component {
+                                id: boolEditor
+                                CheckBox {
+                                    objectName: "setting_" + field.key
+                                    checked: field.value
+                                    onToggled: settingsModel.setValue(field.key, checked)
+                                }
+                            }
+                            Component {
+                                id: choiceEditor
+                                ComboBox {
+                                    objectName: "setting_" + field.key
+                                    model: field.choices
+                                    currentIndex: field.value
+                                    onActivated: (index) => settingsModel.setValue(field.key, index)
+                                }
+                            }
+                            Component {
+                                id: intEditor
+                                SpinBox {
+                                    id: spin
+                                    objectName: "setting_" + field.key
+                                    from: field.minimum; to: field.maximum
+                                    editable: true
+                                    value: field.value
+                                    // Holding an arrow is one history entry: the model merges while interacting.
+                                    readonly property bool held: up.pressed || down.pressed
+                                    onHeldChanged: settingsModel.interacting = held
+                                    onValueModified: settingsModel.setValue(field.key, value)
+                                    Connections {  // a refused value goes back to the document's
+                                        target: settingsModel
+                                        function onChanged() { spin.value = field.value }
+                                    }
+                                }
+                            }
+                            Component {
+                                id: floatEditor
+                                NumberField {
+                                    objectName: "setting_" + field.key
+                                    value: field.value
+                                    onCommitted: (number) => settingsModel.setValue(field.key, number)
+                                }
+                            }
+                            Component {
+                                id: vectorEditor
+                                RowLayout {
+                                    spacing: 2
+                                    Repeater {
+                                        model: 3
+                                        NumberField {
+                                            required property int index
+                                            objectName: "setting_" + field.key + "." + index
+                                            value: field.value[index]
+                                            onCommitted: (number) => {
+                                                const v = [field.value[0], field.value[1], field.value[2]]
+                                                v[index] = number
+                                                settingsModel.setValue(field.key, v)
+                                            }
+                                        }
+                                    }
+                                }
+                            }
                         }
                     }
                 }

@@ -2,37 +2,16 @@
 
 namespace simcore {
 
-std::string_view effectName(Effect effect) {
-    switch (effect) {
-        case Effect::Gravity: return "gravity";
-        case Effect::Damping: return "damping";
-        case Effect::Gyroscopic: return "gyroscopic";
-        case Effect::Contacts: return "contacts";
-        case Effect::Friction: return "friction";
-        case Effect::Restitution: return "restitution";
-        case Effect::Joints: return "joints";
-        case Effect::Ccd: return "ccd";
-        case Effect::Sleeping: return "sleeping";
-        case Effect::Count: break;
-    }
-    return "unknown";
+namespace {
+template <typename Enum, std::size_t N>
+std::string_view nameOf(Enum value, const std::array<std::string_view, N>& names) {
+    const auto index = static_cast<std::size_t>(value);
+    return index < N ? names[index] : "unknown";
 }
+}  // namespace
 
-std::string_view positionCorrectionName(PositionCorrection method) {
-    switch (method) {
-        case PositionCorrection::SoftStep: return "softStep";
-        case PositionCorrection::Baumgarte: return "baumgarte";
-    }
-    return "unknown";
-}
-
-std::string_view integratorName(Integrator integrator) {
-    switch (integrator) {
-        case Integrator::SymplecticEuler: return "symplecticEuler";
-        case Integrator::ExplicitEuler: return "explicitEuler";
-        case Integrator::VelocityVerlet: return "velocityVerlet";
-    }
-    return "unknown";
-}
+std::string_view effectName(Effect effect) { return nameOf(effect, kEffectNames); }
+std::string_view positionCorrectionName(PositionCorrection method) { return nameOf(method, kPositionCorrectionNames); }
+std::string_view integratorName(Integrator integrator) { return nameOf(integrator, kIntegratorNames); }
 
 }  // namespace simcore

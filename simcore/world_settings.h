@@ -25,6 +25,9 @@ enum class Effect : std::uint8_t {
     Count
 };
 constexpr int kEffectCount = static_cast<int>(Effect::Count);
+// The names scene files use, in the enum's order (here, and in the enums below).
+inline constexpr std::array<std::string_view, kEffectCount> kEffectNames{
+    "gravity", "damping", "gyroscopic", "contacts", "friction", "restitution", "joints", "ccd", "sleeping"};
 std::string_view effectName(Effect effect);  // "gravity", "damping", ... as in the scene file
 
 struct EffectFlags {
@@ -45,6 +48,7 @@ enum class PositionCorrection : std::uint8_t {
     // slop, no relax passes. Cheaper per iteration, adds energy, jitters in tall stacks.
     Baumgarte,
 };
+inline constexpr std::array<std::string_view, 2> kPositionCorrectionNames{"softStep", "baumgarte"};
 std::string_view positionCorrectionName(PositionCorrection method);  // "softStep", "baumgarte"
 
 // How a substep moves positions once constraints have set the velocities. All three update
@@ -60,6 +64,7 @@ enum class Integrator : std::uint8_t {
     // flight's parabola) but it lets bodies move half a substep against a constraint's fix.
     VelocityVerlet,
 };
+inline constexpr std::array<std::string_view, 3> kIntegratorNames{"symplecticEuler", "explicitEuler", "velocityVerlet"};
 std::string_view integratorName(Integrator integrator);  // "symplecticEuler", "explicitEuler", "velocityVerlet"
 
 struct SolverSettings {

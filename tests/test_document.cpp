@@ -20,6 +20,7 @@
 #include <QComboBox>
 #include <QFile>
 #include <QLineEdit>
+#include <QAbstractItemModelTester>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
@@ -752,10 +753,11 @@ void TestDocument::inspectorShapeAndMotionChoices() {
 
 void TestDocument::settingsModelPushesAndRejects() {
     interplay::SimulationSettingsModel model(&m_document);
+    QAbstractItemModelTester tester(&model, QAbstractItemModelTester::FailureReportingMode::QtTest);
     QSignalSpy changed(&model, &interplay::SimulationSettingsModel::changed);
     QSignalSpy rejected(&model, &interplay::SimulationSettingsModel::rejected);
 
-    model.setSubsteps(7);
+    QVERIFY(model.setValue("substeps", 7));
     QCOMPARE(m_document.scene().settings.substeps, 7);
     QCOMPARE(m_document.undoStack()->undoText(), QString("Change Substeps"));
     QVERIFY(changed.count() >= 1);
@@ -765,34 +767,39 @@ void TestDocument::settingsModelPushesAndRejects() {
     QCOMPARE(model.preset(), 2);
     QCOMPARE(m_document.scene().settings.substeps, 8);
 
-    model.setIntegrator(static_cast<int>(simcore::Integrator::VelocityVerlet));
+    QVERIFY(model.setValue("integrator", static_cast<int>(simcore::Integrator::VelocityVerlet)));
     QCOMPARE(m_document.scene().settings.integrator, simcore::Integrator::VelocityVerlet);
     QCOMPARE(m_document.undoStack()->undoText(), QString("Change Integrator"));
-    QCOMPARE(model.integratorNames().size(), 3);
-    model.setIntegrator(3);  // no such integrator: nothing pushed
+    const int integratorRow = static_cast<int>(model.keys().indexOf("integrator"));
+    QCOMPARE(model.index(integratorRow).data(interplay::SimulationSettingsModel::ChoicesRole).toStringList().size(), 3);
+    QVERIFY(!model.setValue("integrator", 3));  // no such integrator: refused, nothing pushed
+    QCOMPARE(rejected.count(), 1);
     QCOMPARE(m_document.undoStack()->undoText(), QString("Change Integrator"));
     QCOMPARE(m_document.scene().settings.integrator, simcore::Integrator::VelocityVerlet);
 
-    model.setEffect(static_cast<int>(simcore::Effect::Friction), false);
+    QVERIFY(model.setValue("effects.friction", false));
     QVERIFY(!m_document.scene().settings.effects[simcore::Effect::Friction]);
-    QCOMPARE(model.effects().at(static_cast<int>(simcore::Effect::Friction)).toBool(), false);
+    QCOMPARE(model.value("effects.friction").toBool(), false);
 
     const int entries = m_document.undoStack()->count();
-    model.setSubsteps(0);
-    model.setStepRate(0.0);
-    model.setGravity(0.0, std::nan(""), 0.0);
-    model.setLinearDamping(-1.0);
-    QCOMPARE(rejected.count(), 4);
-    QVERIFY2(rejected.at(0).at(0).toString().contains("substeps"), qPrintable(rejected.at(0).at(0).toString()));
+    QVERIFY(!model.setValue("substeps", 0));
+    QVERIFY(!model.setValue("timeStep", 0.0));
+    QVERIFY(!model.setValue("gravity", QVariantList{0.0, std::nan(""), 0.0}));
+    QVERIFY(!model.setValue("damping.linear", -1.0));
+    QVERIFY(!model.setValue("damping.linear", QStringLiteral("fast")));  // not a number
+    QVERIFY(!model.setValue("solver.bogus", 1));
+    QCOMPARE(rejected.count(), 7);
+    QCOMPARE(rejected.at(1).at(0).toString(), QString("Substeps not changed: substeps must be between 1 and 64, got 0"));
+    QCOMPARE(rejected.at(3).at(0).toString(), QString("Gravity not changed: gravity[1] must be a finite number"));
     QCOMPARE(m_document.undoStack()->count(), entries);
     QCOMPARE(m_document.scene().settings.substeps, 8);
 
-    // A slider drag is one entry.
+    // A drag (or a held spin box arrow) is one entry.
     model.setInteracting(true);
-    for (int i = 1; i <= 10; ++i) model.setGravity(0.0, -static_cast<double>(i), 0.0);
+    for (int i = 1; i <= 10; ++i) QVERIFY(model.setValue("gravity", QVariantList{0.0, -double(i), 0.0}));
     model.setInteracting(false);
     QCOMPARE(m_document.undoStack()->count(), entries + 1);
-    QCOMPARE(model.gravityY(), -10.0);
+    QCOMPARE(model.value("gravity").toList().at(1).toDouble(), -10.0);
 }
 
 void TestDocument::inspectorEditsJoints() {
@@ -858,14 +865,14 @@ void TestDocument::inspectorRejectsBadJointInput_data() {
               distance = int(simcore::JointType::Distance);
     QTest::newRow("NaN anchor") << hinge << "" << "anchor.x" << "nan" << "not a number";
     QTest::newRow("infinite anchor") << hinge << "" << "anchor.z" << "-inf" << "not a number";
-    QTest::newRow("zero axis") << hinge << "" << "axis.z" << "0" << "axis must be";  // x and y are 0 already
+    QTest::newRow("zero axis") << hinge << "" << "axis.z" << "0" << "axis must not be zero";  // x and y are 0 already
     QTest::newRow("hinge limit beyond 180°") << hinge << "limits" << "hingeUpper" << "200" << "between";
-    QTest::newRow("lower above upper") << hinge << "limits" << "hingeLower" << "50" << "lower must not exceed";
+    QTest::newRow("lower above upper") << hinge << "limits" << "hingeLower" << "50" << "exceeds upper";
     QTest::newRow("negative torque") << hinge << "motor" << "hingeMaxTorque" << "-1" << "between";
     QTest::newRow("text speed") << slider << "motor" << "sliderMotorSpeed" << "quick" << "not a number";
-    QTest::newRow("slider lower above upper") << slider << "limits" << "sliderLower" << "2" << "lower must not exceed";
-    QTest::newRow("zero spring frequency") << distance << "spring" << "springHertz" << "0" << "between";
-    QTest::newRow("minimum above maximum") << distance << "lengths" << "minLength" << "100" << "minLength must not exceed";
+    QTest::newRow("slider lower above upper") << slider << "limits" << "sliderLower" << "2" << "exceeds upper";
+    QTest::newRow("zero spring frequency") << distance << "spring" << "springHertz" << "0" << "hertz must be positive";
+    QTest::newRow("minimum above maximum") << distance << "lengths" << "minLength" << "100" << "exceeds maxLength";
 }
 
 void TestDocument::inspectorRejectsBadJointInput() {

@@ -22,6 +22,7 @@
 #include "app/viewport/viewport.h"
 
 #include "simcore/io/scene_io.h"
+#include "simcore/settings_schema.h"
 #include "simcore/world/world.h"
 
 #include <QAction>
@@ -39,6 +40,7 @@
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
+#include <QStatusBar>
 #include <QSurfaceFormat>
 #include <QTemporaryDir>
 #include <QTest>
@@ -1105,8 +1107,8 @@ void TestMainWindow::qmlPanelLoadsAndChangesTheWorld() {
     dock->raise();
     QTRY_VERIFY(quick->isVisible() && quick->width() > 100);
 
-    const auto clickItem = [quick](QQuickItem* item, QPointF at) {
-        // Scroll the panel until the control is in view, as a user would.
+    // Scroll the panel until the control is in view, as a user would.
+    const auto scrollTo = [](QQuickItem* item) {
         for (QQuickItem* ancestor = item->parentItem(); ancestor; ancestor = ancestor->parentItem()) {
             if (!ancestor->inherits("QQuickFlickable")) continue;
             auto* content = qvariant_cast<QQuickItem*>(ancestor->property("contentItem"));
@@ -1115,12 +1117,51 @@ void TestMainWindow::qmlPanelLoadsAndChangesTheWorld() {
             break;
         }
         QTest::qWait(50);
+    };
+    const auto clickItem = [quick, scrollTo](QQuickItem* item, QPointF at) {
+        scrollTo(item);
         const QPointF scene = item->mapToScene(at);
         QTest::mouseClick(quick, Qt::LeftButton, {}, scene.toPoint());
     };
 
+    // Every setting of the schema has its editor in the panel (a vector one per component).
+    for (const simcore::SettingInfo& info : simcore::settingsSchema()) {
+        const QString name = "setting_" + QString::fromLatin1(info.key.data(), static_cast<qsizetype>(info.key.size()));
+        if (info.type != simcore::SettingType::Vec3) QVERIFY2(findItem(quick->rootObject(), name), qPrintable(name));
+        for (int i = 0; info.type == simcore::SettingType::Vec3 && i < 3; ++i)
+            QVERIFY2(findItem(quick->rootObject(), name + "." + QString::number(i)), qPrintable(name));
+    }
+
+    // Typing a value the loader would refuse (the bug report's gravity 1e9) changes nothing and says why.
+    auto* gravityY = findItem(quick->rootObject(), "setting_gravity.1");
+    QVERIFY(gravityY);
+    const float gravityBefore = m_window->document()->scene().settings.gravity.y;
+    const int entriesBefore = m_window->document()->undoStack()->count();
+    gravityY->setProperty("text", "1e9");
+    QVERIFY(QMetaObject::invokeMethod(gravityY, "editingFinished"));
+    QCOMPARE(m_window->document()->scene().settings.gravity.y, gravityBefore);
+    QCOMPARE(m_window->document()->undoStack()->count(), entriesBefore);
+    QVERIFY2(m_window->statusBar()->currentMessage().contains("gravity[1] must be between -10000 and 10000"),
+             qPrintable(m_window->statusBar()->currentMessage()));
+    QCOMPARE(gravityY->property("text").toString(), QString::number(double(gravityBefore)));
+
+    // Dragging the gravity label sideways scales gravity: the whole drag is one history entry.
+    auto* gravityLabel = findItem(quick->rootObject(), "label_gravity");
+    QVERIFY(gravityLabel);
+    scrollTo(gravityLabel);
+    const QPoint from = gravityLabel->mapToScene(QPointF(10, gravityLabel->height() / 2)).toPoint();
+    QTest::mousePress(quick, Qt::LeftButton, {}, from);
+    for (int i = 1; i <= 10; ++i) QTest::mouseMove(quick, from + QPoint(8 * i, 0));
+    QTest::mouseRelease(quick, Qt::LeftButton, {}, from + QPoint(80, 0));
+    QTRY_VERIFY(m_window->document()->scene().settings.gravity.y < gravityBefore * 1.2f);
+    QCOMPARE(m_window->document()->undoStack()->count(), entriesBefore + 1);
+    QCOMPARE(m_window->document()->undoStack()->undoText(), QString("Change Gravity"));
+    QCOMPARE(m_window->simulation()->world()->settings().gravity, m_window->document()->scene().settings.gravity);
+    m_window->document()->undoStack()->undo();
+    QCOMPARE(m_window->document()->scene().settings.gravity.y, gravityBefore);
+
     // The substeps spin box's "up" indicator: one more substep, in the document and the world.
-    auto* substeps = findItem(quick->rootObject(), "substepsSpinBox");
+    auto* substeps = findItem(quick->rootObject(), "setting_substeps");
     QVERIFY(substeps);
     const int before = m_window->document()->scene().settings.substeps;
     QCOMPARE(substeps->property("value").toInt(), before);
@@ -1136,7 +1177,7 @@ void TestMainWindow::qmlPanelLoadsAndChangesTheWorld() {
     QCOMPARE(m_window->simulation()->world()->settings().substeps, before);
 
     // An effect check box switches the effect off in the running world.
-    auto* friction = findItem(quick->rootObject(), "effect_friction");
+    auto* friction = findItem(quick->rootObject(), "setting_effects.friction");
     QVERIFY(friction);
     QVERIFY(friction->property("checked").toBool());
     clickItem(friction, QPointF(friction->height() / 2, friction->height() / 2));

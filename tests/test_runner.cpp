@@ -1,9 +1,12 @@
 // interplay-run end to end: arguments, exit codes, and the report contract from the brief.
 
+#include "simcore/settings_schema.h"
+
 #include <QtTest>
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace {
@@ -58,6 +61,7 @@ private slots:
     void reportHasTheContractFieldsAndTheRightPhysics();
     void optionsChangeTheSettings();
     void unknownSettingIsNamed();
+    void helpListsEverySetting();
     void secondsBecomeSteps();
     void traceAndOutFilesAreWritten();
     void saveWithZeroStepsConvertsTheScene();
@@ -166,6 +170,23 @@ void TestRunner::unknownSettingIsNamed() {
     const RunResult r = runRunner({writeScene(kProjectileScene), "--set", "solver.bogus=3"});
     QCOMPARE(r.exitCode, 2);
     QVERIFY2(r.err.contains("solver.bogus"), qPrintable(r.err));
+}
+
+void TestRunner::helpListsEverySetting() {
+    const RunResult r = runRunner({"--help"});
+    QCOMPARE(r.exitCode, 0);
+    const QStringList lines = r.out.split('\n');
+    for (const simcore::SettingInfo& info : simcore::settingsSchema()) {
+        const QString key = QString::fromLatin1(info.key.data(), static_cast<qsizetype>(info.key.size()));
+        const QString doc = QString::fromLatin1(info.doc.data(), static_cast<qsizetype>(info.doc.size()));
+        const QString range = info.type == simcore::SettingType::Bool     ? QString("true or false")
+                              : info.type == simcore::SettingType::Choice ? QString::fromStdString(info.choiceList())
+                                                                          : QString::fromStdString(info.range.describe());
+        const bool listed = std::any_of(lines.begin(), lines.end(), [&](const QString& line) {
+            return line.startsWith("  " + key + "  ") && line.contains(range) && line.endsWith(doc);
+        });
+        QVERIFY2(listed, qPrintable(key));
+    }
 }
 
 void TestRunner::secondsBecomeSteps() {

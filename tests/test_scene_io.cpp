@@ -217,6 +217,34 @@ class TestSceneIo : public QObject {
     Q_OBJECT
 
 private slots:
+    // checkScene: what the loader would say about a scene in memory, at the path it would have.
+    void checkSceneReportsWhatTheLoaderWould() {
+        Scene scene = defaultScene();
+        QVERIFY(checkScene(scene).empty());
+        scene.settings.gravity.y = 1e9f;
+        scene.bodies[1].body.friction = -1.0f;
+        const std::vector<Diagnostic> found = checkScene(scene);
+        QCOMPARE(found.size(), std::size_t(2));
+        QCOMPARE(QString::fromStdString(found[0].path), QString("/settings/gravity/1"));
+        QCOMPARE(QString::fromStdString(found[0].message),
+                 QString("gravity[1] must be between -10000 and 10000 m/s^2, got 1e+09"));
+        QCOMPARE(QString::fromStdString(found[1].path), QString("/bodies/1/friction"));
+        QCOMPARE(found[1].severity, Diagnostic::Severity::Error);
+        // The same scene saved and opened gives the same diagnostics.
+        const SceneLoadResult loaded = parseScene(serializeScene(scene), "");
+        QCOMPARE(loaded.diagnostics.size(), found.size());
+        QCOMPARE(loaded.diagnostics[0].message, found[0].message);
+
+        // A joint whose body is gone cannot be written at all: said so, not crashed on.
+        Scene broken = defaultScene();
+        SceneJoint joint;
+        joint.bodyA = broken.bodies.size();
+        broken.joints.push_back(joint);
+        const std::vector<Diagnostic> missing = checkScene(broken);
+        QCOMPARE(missing.size(), std::size_t(1));
+        QCOMPARE(QString::fromStdString(missing[0].path), QString("/joints/0"));
+    }
+
     void awkwardSceneHasEveryShape() {
         const Scene s = awkwardScene();
         QCOMPARE(s.bodies.size(), std::size_t(kShapeTypeCount));

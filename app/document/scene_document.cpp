@@ -3,7 +3,6 @@
 #include "app/document/scene_edits.h"
 
 #include "simcore/io/scene_io.h"
-#include "simcore/world/world.h"
 
 #include <QFile>
 #include <QFileInfo>
@@ -53,14 +52,12 @@ bool SceneDocument::load(const QString& path, QString* error) {
         if (error) *error = tr("%1: %2").arg(path, file.errorString());
         return false;
     }
-    // The loader refuses text over this size too (kMaxTextBytes in simcore/io/json_reader.h, internal to
-    // simcore; test_editor_soak checks that both give this message). Checked on the file's size, so a
-    // huge file is refused without reading it into memory.
-    constexpr qint64 kMaxSceneFileBytes = 64ll * 1024 * 1024;
-    if (file.size() > kMaxSceneFileBytes) {
+    // The loader's limit (test_editor_soak checks that both give this message), checked on the
+    // file's size, so a huge file is refused without reading it into memory.
+    if (static_cast<std::uintmax_t>(file.size()) > simcore::kMaxSceneFileBytes) {
         simcore::Diagnostic tooLarge;
         tooLarge.file = path.toStdString();
-        tooLarge.message = "the file is larger than " + std::to_string(kMaxSceneFileBytes >> 20) + " MiB; it is not a scene";
+        tooLarge.message = "the file is larger than " + std::to_string(simcore::kMaxSceneFileBytes >> 20) + " MiB; it is not a scene";
         if (error) *error = QString::fromStdString(tooLarge.toString());
         return false;
     }
@@ -172,18 +169,11 @@ QString SceneDocument::jointName(int index) const {
 }
 
 QString SceneDocument::jointProblem(const simcore::SceneJoint& joint) const {
-    if (joint.bodyA >= m_scene.bodies.size() || (joint.bodyB && *joint.bodyB >= m_scene.bodies.size()))
-        return tr("a body of the joint is missing");
-    // The engine's own checks, on a world holding just the joint's bodies.
-    try {
-        simcore::World probe;
-        simcore::JointCreationSettings settings = joint.joint;
-        settings.bodyA = probe.createBody(m_scene.bodies[joint.bodyA].body);
-        if (joint.bodyB) settings.bodyB = probe.createBody(m_scene.bodies[*joint.bodyB].body);
-        probe.createJoint(settings);
-    } catch (const std::exception& e) {
-        return QString::fromStdString(e.what());
-    }
+    // The loader's checks, on the scene with the joint in it.
+    simcore::Scene candidate = m_scene;
+    candidate.joints.push_back(joint);
+    for (const simcore::Diagnostic& d : simcore::checkScene(candidate))
+        if (d.severity == simcore::Diagnostic::Severity::Error) return QString::fromStdString(d.message);
     return {};
 }
 

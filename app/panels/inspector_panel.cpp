@@ -5,7 +5,8 @@
 #include "app/panels/number_field.h"
 #include "app/viewport/color_space.h"
 
-#include "simcore/world/world.h"
+#include "simcore/io/scene_io.h"
+#include "simcore/settings_schema.h"
 
 #include <QCheckBox>
 #include <QColorDialog>
@@ -22,27 +23,54 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include <cmath>
-#include <exception>
+#include <cstdlib>
 #include <type_traits>
 
 namespace interplay {
 namespace {
 
-// Accepted ranges, as the scene format documents them (docs/scene-format.md): outside them the
-// file would be refused on load, so the editor does not let them in either.
-constexpr double kMinSize = 1e-4, kMaxSize = 1e5;               // m
-constexpr double kMaxCoordinate = 1e6;                          // m
-constexpr double kMaxSpeed = 1e4;                               // m/s and rad/s
-constexpr double kMinMass = 1e-6, kMaxMass = 1e9;               // kg
-constexpr double kMinDensity = 1e-3, kMaxDensity = 1e6;         // kg/m^3
-constexpr double kMaxFriction = 100.0;
-constexpr double kMaxRollingResistance = 100.0;
-constexpr double kMaxAngle = 360.0;                             // degrees
-constexpr double kMaxHingeAngle = 180.0;                        // degrees: limits lie within [-pi, pi]
-constexpr double kMaxMotorForce = 1e12;                         // N or N m
-constexpr double kMaxLength = 1e6;                              // m
-constexpr double kMinSpringHertz = 1e-3, kMaxSpringHertz = 1e4; // Hz
-constexpr double kMaxDampingRatio = 1e4;
+// Accepted ranges: the scene format's (simcore/settings_schema.h), so the editor lets in nothing a
+// file would refuse on load. Each field names the schema properties it edits (its "schemaKeys"),
+// which test_settings_schema checks against the schema.
+using simcore::PropertyOwner;
+const simcore::NumberRange& range(PropertyOwner owner, std::string_view key) {
+    return simcore::propertyRange(owner, key);
+}
+constexpr double kMaxAngle = 360.0;  // degrees: Euler angles are how the Inspector shows an orientation
+
+// The schema properties ("owner.key") each number field edits; a vector's x, y and z fields all
+// edit theirs. The orientation's Euler angles edit no one file value (the file has a quaternion).
+struct FieldSchemaKeys {
+    const char* field;
+    std::array<const char*, 3> keys;  // unused entries are null
+};
+constexpr FieldSchemaKeys kFieldSchemaKeys[] = {
+    {"halfExtents", {"box.halfExtents"}},
+    {"radius", {"sphere.radius", "capsule.radius", "cylinder.radius"}},
+    {"halfHeight", {"capsule.halfHeight", "cylinder.halfHeight"}},
+    {"mass", {"body.mass", "body.density"}},
+    {"friction", {"body.friction"}},
+    {"restitution", {"body.restitution"}},
+    {"rollingResistance", {"body.rollingResistance"}},
+    {"position", {"body.position"}},
+    {"linearVelocity", {"body.linearVelocity"}},
+    {"angularVelocity", {"body.angularVelocity"}},
+    {"anchor", {"joint.anchor"}},
+    {"anchorB", {"distance.anchorB"}},
+    {"axis", {"hinge.axis", "slider.axis"}},
+    {"hingeLower", {"hinge.limits.lower"}},
+    {"hingeUpper", {"hinge.limits.upper"}},
+    {"sliderLower", {"slider.limits.lower"}},
+    {"sliderUpper", {"slider.limits.upper"}},
+    {"hingeMotorSpeed", {"hinge.motor.speed"}},
+    {"hingeMaxTorque", {"hinge.motor.maxTorque"}},
+    {"sliderMotorSpeed", {"slider.motor.speed"}},
+    {"sliderMaxForce", {"slider.motor.maxForce"}},
+    {"minLength", {"distance.minLength"}},
+    {"maxLength", {"distance.maxLength"}},
+    {"springHertz", {"distance.spring.hertz"}},
+    {"springDampingRatio", {"distance.spring.dampingRatio"}},
+};
 
 // What switching a joint's option on starts from. The motor can move the editor's one-metre
 // template bodies (about 1000 kg at the default density) against gravity.
@@ -160,6 +188,14 @@ InspectorPanel::InspectorPanel(SceneDocument* document, QWidget* parent)
 
     createBodyRows();
     createJointRows();
+    for (const auto& [field, keys] : kFieldSchemaKeys) {
+        QStringList schemaKeys;
+        for (const char* key : keys)
+            if (key) schemaKeys << QString::fromLatin1(key);
+        const QString name = QString::fromLatin1(field);
+        for (const QString& part : {name, name + ".x", name + ".y", name + ".z"})
+            if (NumberField* number = numberField(part)) number->setProperty("schemaKeys", schemaKeys);
+    }
 
     connect(document, &SceneDocument::selectionChanged, this, &InspectorPanel::refresh);
     connect(document, &SceneDocument::sceneReplaced, this, &InspectorPanel::refresh);
@@ -202,20 +238,23 @@ void InspectorPanel::createBodyRows() {
             if (b.body.shape.type != type) b.body.shape = templateShape(type);
         });
     });
-    m_bodyRows.addVector(QStringLiteral("halfExtents"), tr("Half extents"), tr("Half extent"), kMinSize, kMaxSize,
+    m_bodyRows.addVector(QStringLiteral("halfExtents"), tr("Half extents"), tr("Half extent"), range(PropertyOwner::Box, "halfExtents").min,
+                         range(PropertyOwner::Box, "halfExtents").max,
                          BodyField::Shape,
                          [](const simcore::SceneBody& b, int axis) -> std::optional<double> {
                              if (b.body.shape.type != simcore::ShapeType::Box) return std::nullopt;
                              return b.body.shape.halfExtents[axis];
                          },
                          [](simcore::SceneBody& b, int axis, double v) { b.body.shape.halfExtents[axis] = static_cast<float>(v); });
-    m_bodyRows.addNumber(QStringLiteral("radius"), tr("Radius"), kMinSize, kMaxSize, BodyField::Shape,
+    m_bodyRows.addNumber(QStringLiteral("radius"), tr("Radius"), range(PropertyOwner::Sphere, "radius").min,
+                         range(PropertyOwner::Sphere, "radius").max, BodyField::Shape,
                          [](const simcore::SceneBody& b) -> std::optional<double> {
                              if (!hasRadius(b)) return std::nullopt;
                              return b.body.shape.radius;
                          },
                          [](simcore::SceneBody& b, double v) { b.body.shape.radius = static_cast<float>(v); });
-    m_bodyRows.addNumber(QStringLiteral("halfHeight"), tr("Half height"), kMinSize, kMaxSize, BodyField::Shape,
+    m_bodyRows.addNumber(QStringLiteral("halfHeight"), tr("Half height"), range(PropertyOwner::Capsule, "halfHeight").min,
+                         range(PropertyOwner::Capsule, "halfHeight").max, BodyField::Shape,
                          [](const simcore::SceneBody& b) -> std::optional<double> {
                              if (!hasHalfHeight(b)) return std::nullopt;
                              return b.body.shape.halfHeight;
@@ -249,7 +288,8 @@ void InspectorPanel::createBodyRows() {
             }
         }, isDynamic);
     });
-    m_bodyRows.addNumber(QStringLiteral("mass"), tr("Mass or density"), kMinMass, kMaxMass, BodyField::Mass,
+    m_bodyRows.addNumber(QStringLiteral("mass"), tr("Mass or density"), simcore::limits::kMass.min,
+                         simcore::limits::kMass.max, BodyField::Mass,
                          [](const simcore::SceneBody& b) -> std::optional<double> {
                              if (!isDynamic(b)) return std::nullopt;
                              return b.body.mass ? *b.body.mass : b.body.density;
@@ -260,20 +300,25 @@ void InspectorPanel::createBodyRows() {
                          });
 
     // Material.
-    m_bodyRows.addNumber(QStringLiteral("friction"), tr("Friction"), 0.0, kMaxFriction, BodyField::Friction,
+    m_bodyRows.addNumber(QStringLiteral("friction"), tr("Friction"), range(PropertyOwner::Body, "friction").min,
+                         range(PropertyOwner::Body, "friction").max, BodyField::Friction,
                          [](const simcore::SceneBody& b) -> std::optional<double> { return b.body.friction; },
                          [](simcore::SceneBody& b, double v) { b.body.friction = static_cast<float>(v); });
-    m_bodyRows.addNumber(QStringLiteral("restitution"), tr("Restitution"), 0.0, 1.0, BodyField::Restitution,
+    m_bodyRows.addNumber(QStringLiteral("restitution"), tr("Restitution"), range(PropertyOwner::Body, "restitution").min,
+                         range(PropertyOwner::Body, "restitution").max, BodyField::Restitution,
                          [](const simcore::SceneBody& b) -> std::optional<double> { return b.body.restitution; },
                          [](simcore::SceneBody& b, double v) { b.body.restitution = static_cast<float>(v); });
-    m_bodyRows.addNumber(QStringLiteral("rollingResistance"), tr("Rolling resistance"), 0.0, kMaxRollingResistance,
+    m_bodyRows.addNumber(QStringLiteral("rollingResistance"), tr("Rolling resistance"),
+                         range(PropertyOwner::Body, "rollingResistance").min,
+                         range(PropertyOwner::Body, "rollingResistance").max,
                          BodyField::RollingResistance,
                          [](const simcore::SceneBody& b) -> std::optional<double> { return b.body.rollingResistance; },
                          [](simcore::SceneBody& b, double v) { b.body.rollingResistance = static_cast<float>(v); },
                          tr("Rolling Resistance"));
 
     // Placement and motion state.
-    m_bodyRows.addVector(QStringLiteral("position"), tr("Position (m)"), tr("Position"), -kMaxCoordinate, kMaxCoordinate,
+    m_bodyRows.addVector(QStringLiteral("position"), tr("Position (m)"), tr("Position"),
+                         range(PropertyOwner::Body, "position").min, range(PropertyOwner::Body, "position").max,
                          BodyField::Position,
                          [](const simcore::SceneBody& b, int axis) -> std::optional<double> { return b.body.position[axis]; },
                          [](simcore::SceneBody& b, int axis, double v) { b.body.position[axis] = static_cast<float>(v); });
@@ -287,12 +332,13 @@ void InspectorPanel::createBodyRows() {
                              angles[axis] = static_cast<float>(v);
                              b.body.orientation = glm::normalize(simcore::Quat(glm::radians(angles)));
                          });
-    m_bodyRows.addVector(QStringLiteral("linearVelocity"), tr("Velocity (m/s)"), tr("Velocity"), -kMaxSpeed, kMaxSpeed,
+    m_bodyRows.addVector(QStringLiteral("linearVelocity"), tr("Velocity (m/s)"), tr("Velocity"),
+                         range(PropertyOwner::Body, "linearVelocity").min, range(PropertyOwner::Body, "linearVelocity").max,
                          BodyField::LinearVelocity,
                          [](const simcore::SceneBody& b, int axis) -> std::optional<double> { return b.body.linearVelocity[axis]; },
                          [](simcore::SceneBody& b, int axis, double v) { b.body.linearVelocity[axis] = static_cast<float>(v); });
-    m_bodyRows.addVector(QStringLiteral("angularVelocity"), tr("Spin (rad/s)"), tr("Angular velocity"), -kMaxSpeed,
-                         kMaxSpeed, BodyField::AngularVelocity,
+    m_bodyRows.addVector(QStringLiteral("angularVelocity"), tr("Spin (rad/s)"), tr("Angular velocity"),
+                         range(PropertyOwner::Body, "angularVelocity").min, range(PropertyOwner::Body, "angularVelocity").max, BodyField::AngularVelocity,
                          [](const simcore::SceneBody& b, int axis) -> std::optional<double> { return b.body.angularVelocity[axis]; },
                          [](simcore::SceneBody& b, int axis, double v) { b.body.angularVelocity[axis] = static_cast<float>(v); });
 
@@ -340,6 +386,9 @@ void InspectorPanel::createJointRows() {
     const auto setSpring = [](float simcore::JointSpring::*member) {
         return [member](simcore::SceneJoint& j, double v) { (*j.joint.spring).*member = static_cast<float>(v); };
     };
+    // Hinge limits are shown in degrees; the file's range is in radians.
+    struct { double min, max; } const hingeAngle{glm::degrees(range(PropertyOwner::Hinge, "limits.lower").min),
+                                                 glm::degrees(range(PropertyOwner::Hinge, "limits.lower").max)};
 
     m_jointName->setObjectName(QStringLiteral("jointName"));
     m_jointRows.addRow(tr("Name"), m_jointName, always);
@@ -363,18 +412,20 @@ void InspectorPanel::createJointRows() {
     m_jointRows.addRow(tr("Joins"), m_jointBodies, always);
 
     // Where it holds, as authored (world frame): the pose of the bodies at Reset is the rest pose.
-    m_jointRows.addVector(QStringLiteral("anchor"), tr("Anchor (m)"), tr("Anchor"), -kMaxCoordinate, kMaxCoordinate,
+    m_jointRows.addVector(QStringLiteral("anchor"), tr("Anchor (m)"), tr("Anchor"),
+                          range(PropertyOwner::Joint, "anchor").min, range(PropertyOwner::Joint, "anchor").max,
                           JointField::Anchor,
                           [](const simcore::SceneJoint& j, int axis) -> std::optional<double> { return j.joint.anchor[axis]; },
                           [](simcore::SceneJoint& j, int axis, double v) { j.joint.anchor[axis] = static_cast<float>(v); });
-    m_jointRows.addVector(QStringLiteral("anchorB"), tr("Anchor on B (m)"), tr("Anchor on B"), -kMaxCoordinate,
-                          kMaxCoordinate, JointField::AnchorB,
+    m_jointRows.addVector(QStringLiteral("anchorB"), tr("Anchor on B (m)"), tr("Anchor on B"),
+                          range(PropertyOwner::Distance, "anchorB").min, range(PropertyOwner::Distance, "anchorB").max, JointField::AnchorB,
                           [](const simcore::SceneJoint& j, int axis) -> std::optional<double> {
                               if (!isDistance(j)) return std::nullopt;
                               return j.joint.anchorB[axis];
                           },
                           [](simcore::SceneJoint& j, int axis, double v) { j.joint.anchorB[axis] = static_cast<float>(v); });
-    m_jointRows.addVector(QStringLiteral("axis"), tr("Axis"), tr("Axis"), -kMaxCoordinate, kMaxCoordinate, JointField::Axis,
+    m_jointRows.addVector(QStringLiteral("axis"), tr("Axis"), tr("Axis"), range(PropertyOwner::Hinge, "axis").min,
+                          range(PropertyOwner::Hinge, "axis").max, JointField::Axis,
                           [](const simcore::SceneJoint& j, int axis) -> std::optional<double> {
                               if (!isHingeOrSlider(j)) return std::nullopt;
                               return j.joint.axis[axis];
@@ -394,19 +445,21 @@ void InspectorPanel::createJointRows() {
             }
         }, isHingeOrSlider);
     });
-    m_jointRows.addNumber(QStringLiteral("hingeLower"), tr("Lower angle (°)"), -kMaxHingeAngle, kMaxHingeAngle,
+    m_jointRows.addNumber(QStringLiteral("hingeLower"), tr("Lower angle (°)"), hingeAngle.min, hingeAngle.max,
                           JointField::Limits, hingeLimit(&simcore::JointLimits::lower),
                           [](simcore::SceneJoint& j, double v) { j.joint.limits->lower = glm::radians(static_cast<float>(v)); },
                           tr("Lower Angle"));
-    m_jointRows.addNumber(QStringLiteral("hingeUpper"), tr("Upper angle (°)"), -kMaxHingeAngle, kMaxHingeAngle,
+    m_jointRows.addNumber(QStringLiteral("hingeUpper"), tr("Upper angle (°)"), hingeAngle.min, hingeAngle.max,
                           JointField::Limits, hingeLimit(&simcore::JointLimits::upper),
                           [](simcore::SceneJoint& j, double v) { j.joint.limits->upper = glm::radians(static_cast<float>(v)); },
                           tr("Upper Angle"));
-    m_jointRows.addNumber(QStringLiteral("sliderLower"), tr("Lower limit (m)"), -kMaxCoordinate, kMaxCoordinate,
+    m_jointRows.addNumber(QStringLiteral("sliderLower"), tr("Lower limit (m)"),
+                          range(PropertyOwner::Slider, "limits.lower").min, range(PropertyOwner::Slider, "limits.lower").max,
                           JointField::Limits, sliderLimit(&simcore::JointLimits::lower),
                           [](simcore::SceneJoint& j, double v) { j.joint.limits->lower = static_cast<float>(v); },
                           tr("Lower Limit"));
-    m_jointRows.addNumber(QStringLiteral("sliderUpper"), tr("Upper limit (m)"), -kMaxCoordinate, kMaxCoordinate,
+    m_jointRows.addNumber(QStringLiteral("sliderUpper"), tr("Upper limit (m)"),
+                          range(PropertyOwner::Slider, "limits.upper").min, range(PropertyOwner::Slider, "limits.upper").max,
                           JointField::Limits, sliderLimit(&simcore::JointLimits::upper),
                           [](simcore::SceneJoint& j, double v) { j.joint.limits->upper = static_cast<float>(v); },
                           tr("Upper Limit"));
@@ -420,19 +473,25 @@ void InspectorPanel::createJointRows() {
             else if (!j.joint.motor) j.joint.motor = kDefaultMotor;
         }, isHingeOrSlider);
     });
-    m_jointRows.addNumber(QStringLiteral("hingeMotorSpeed"), tr("Motor speed (rad/s)"), -kMaxSpeed, kMaxSpeed,
+    m_jointRows.addNumber(QStringLiteral("hingeMotorSpeed"), tr("Motor speed (rad/s)"),
+                          range(PropertyOwner::Hinge, "motor.speed").min, range(PropertyOwner::Hinge, "motor.speed").max,
                           JointField::Motor, motorValue(simcore::JointType::Hinge, &simcore::JointMotor::speed),
                           setMotor(&simcore::JointMotor::speed),
                           tr("Hinge Motor Speed"));
-    m_jointRows.addNumber(QStringLiteral("hingeMaxTorque"), tr("Max torque (N m)"), 0.0, kMaxMotorForce, JointField::Motor,
+    m_jointRows.addNumber(QStringLiteral("hingeMaxTorque"), tr("Max torque (N m)"),
+                          range(PropertyOwner::Hinge, "motor.maxTorque").min,
+                          range(PropertyOwner::Hinge, "motor.maxTorque").max, JointField::Motor,
                           motorValue(simcore::JointType::Hinge, &simcore::JointMotor::maxForce),
                           setMotor(&simcore::JointMotor::maxForce),
                           tr("Hinge Motor Torque"));
-    m_jointRows.addNumber(QStringLiteral("sliderMotorSpeed"), tr("Motor speed (m/s)"), -kMaxSpeed, kMaxSpeed,
+    m_jointRows.addNumber(QStringLiteral("sliderMotorSpeed"), tr("Motor speed (m/s)"),
+                          range(PropertyOwner::Slider, "motor.speed").min, range(PropertyOwner::Slider, "motor.speed").max,
                           JointField::Motor, motorValue(simcore::JointType::Slider, &simcore::JointMotor::speed),
                           setMotor(&simcore::JointMotor::speed),
                           tr("Slider Motor Speed"));
-    m_jointRows.addNumber(QStringLiteral("sliderMaxForce"), tr("Max force (N)"), 0.0, kMaxMotorForce, JointField::Motor,
+    m_jointRows.addNumber(QStringLiteral("sliderMaxForce"), tr("Max force (N)"),
+                          range(PropertyOwner::Slider, "motor.maxForce").min,
+                          range(PropertyOwner::Slider, "motor.maxForce").max, JointField::Motor,
                           motorValue(simcore::JointType::Slider, &simcore::JointMotor::maxForce),
                           setMotor(&simcore::JointMotor::maxForce),
                           tr("Slider Motor Force"));
@@ -453,14 +512,18 @@ void InspectorPanel::createJointRows() {
             }
         }, isDistance);
     });
-    m_jointRows.addNumber(QStringLiteral("minLength"), tr("Min length (m)"), 0.0, kMaxLength, JointField::Lengths,
+    m_jointRows.addNumber(QStringLiteral("minLength"), tr("Min length (m)"),
+                          range(PropertyOwner::Distance, "minLength").min, range(PropertyOwner::Distance, "minLength").max,
+                          JointField::Lengths,
                           [](const simcore::SceneJoint& j) -> std::optional<double> {
                               if (!hasLengthRange(j)) return std::nullopt;
                               return simcore::distanceLengths(j.joint).min;
                           },
                           [](simcore::SceneJoint& j, double v) { j.joint.minLength = static_cast<float>(v); },
                           tr("Minimum Length"));
-    m_jointRows.addNumber(QStringLiteral("maxLength"), tr("Max length (m)"), 0.0, kMaxLength, JointField::Lengths,
+    m_jointRows.addNumber(QStringLiteral("maxLength"), tr("Max length (m)"),
+                          range(PropertyOwner::Distance, "maxLength").min, range(PropertyOwner::Distance, "maxLength").max,
+                          JointField::Lengths,
                           [](const simcore::SceneJoint& j) -> std::optional<double> {
                               if (!hasLengthRange(j)) return std::nullopt;
                               return simcore::distanceLengths(j.joint).max;
@@ -475,11 +538,15 @@ void InspectorPanel::createJointRows() {
             else if (!j.joint.spring) j.joint.spring = simcore::JointSpring{};
         }, isDistance);
     });
-    m_jointRows.addNumber(QStringLiteral("springHertz"), tr("Spring frequency (Hz)"), kMinSpringHertz, kMaxSpringHertz,
+    m_jointRows.addNumber(QStringLiteral("springHertz"), tr("Spring frequency (Hz)"),
+                          range(PropertyOwner::Distance, "spring.hertz").min,
+                          range(PropertyOwner::Distance, "spring.hertz").max,
                           JointField::Spring, springValue(&simcore::JointSpring::hertz),
                           setSpring(&simcore::JointSpring::hertz),
                           tr("Spring Frequency"));
-    m_jointRows.addNumber(QStringLiteral("springDampingRatio"), tr("Spring damping ratio"), 0.0, kMaxDampingRatio,
+    m_jointRows.addNumber(QStringLiteral("springDampingRatio"), tr("Spring damping ratio"),
+                          range(PropertyOwner::Distance, "spring.dampingRatio").min,
+                          range(PropertyOwner::Distance, "spring.dampingRatio").max,
                           JointField::Spring, springValue(&simcore::JointSpring::dampingRatio),
                           setSpring(&simcore::JointSpring::dampingRatio),
                           tr("Spring Damping"));
@@ -519,6 +586,18 @@ QString commandText(JointField field, const QString& what, const QString& object
     return InspectorPanel::tr("Change %1 of %2").arg(what, objects);
 }
 
+// The body or joint a diagnostic's path ("/bodies/3/friction") is about; `fallback` (a body, or
+// a joint when !bodies) when the path names neither.
+QString objectNamed(const SceneDocument& document, const std::string& path, bool bodies, int fallback) {
+    for (const bool body : {true, false}) {
+        const std::string prefix = body ? "/bodies/" : "/joints/";
+        if (path.rfind(prefix, 0) != 0) continue;
+        const int index = std::atoi(path.c_str() + prefix.size());
+        return body ? document.bodyName(index) : document.jointName(index);
+    }
+    return bodies ? document.bodyName(fallback) : document.jointName(fallback);
+}
+
 }  // namespace
 
 template <typename Object, typename Field>
@@ -529,34 +608,27 @@ void InspectorPanel::edit(Field field, const QString& what, const std::function<
     const QList<int>& selection = kBodies ? m_document->selectedBodies() : m_document->selectedJoints();
     QList<int> indices;
     std::vector<Object> after;
+    simcore::Scene candidate = m_document->scene();
     for (int index : selection) {
         const Object& object = ObjectAccess<Object>::get(*m_document, index);
         if (appliesTo && !appliesTo(object)) continue;
         Object changed = object;
         change(changed);
-        // The engine's own checks catch what a single field cannot (a hull that is missing, limits
-        // the wrong way round).
-        QString problem;
-        if constexpr (kBodies) {
-            try {
-                simcore::World probe;
-                probe.createBody(changed.body);
-            } catch (const std::exception& e) {
-                problem = QString::fromStdString(e.what());
-            }
-        } else {
-            problem = m_document->jointProblem(changed);
-        }
-        if (!problem.isEmpty()) {
-            const QString name = kBodies ? m_document->bodyName(index) : m_document->jointName(index);
-            showMessage(tr("%1 not changed: %2").arg(name, problem));
-            refresh();
-            return;
-        }
+        if constexpr (kBodies) candidate.bodies[static_cast<std::size_t>(index)] = changed;
+        else candidate.joints[static_cast<std::size_t>(index)] = changed;
         indices << index;
         after.push_back(std::move(changed));
     }
     if (indices.isEmpty()) return;
+    // The loader's checks on the scene as it would be: what one field cannot see (a hull that is
+    // missing, limits the wrong way round, a mass the density gives) is refused too.
+    for (const simcore::Diagnostic& d : simcore::checkScene(candidate)) {
+        if (d.severity != simcore::Diagnostic::Severity::Error) continue;
+        showMessage(tr("%1 not changed: %2").arg(objectNamed(*m_document, d.path, kBodies, indices.value(0)),
+                                                  QString::fromStdString(d.message)));
+        refresh();
+        return;
+    }
     QString label, newName;
     if constexpr (kBodies) {
         label = bodiesLabel(*m_document, indices);
@@ -633,8 +705,8 @@ void InspectorPanel::refreshBodies() {
     m_motion->setCurrentIndex(m_motion->findData(static_cast<int>(lead.body.motion)));
     m_massMode->setCurrentIndex(lead.body.mass ? 0 : 1);
     // The field takes what a scene file accepts for what it holds (docs/scene-format.md).
-    if (lead.body.mass) numberField(QStringLiteral("mass"))->setRange(kMinMass, kMaxMass);
-    else numberField(QStringLiteral("mass"))->setRange(kMinDensity, kMaxDensity);
+    const simcore::NumberRange& massRange = range(PropertyOwner::Body, lead.body.mass ? "mass" : "density");
+    numberField(QStringLiteral("mass"))->setRange(massRange.min, massRange.max);
     if (lead.body.shape.hull) {
         m_hullInfo->setText(tr("%1 points, %2 faces")
                                 .arg(lead.body.shape.hull->sourcePoints().size())

@@ -1,75 +1,64 @@
 #pragma once
-// The document's world settings as QML properties, for the Simulation settings panel. Reads come
-// from the document; every write is an undoable ChangeSettings command, checked by the engine
-// first: a value it rejects (NaN, zero step, negative iterations...) pushes nothing and is reported
-// through rejected(). Writes made while a control is being dragged (interacting = true) merge
-// into one history entry.
+// The document's world settings for the Simulation settings panel: one row per setting of
+// simcore's schema (settings_schema.h), in its order, with the schema's group, label, unit, range
+// and documentation as roles, so the panel shows every setting without knowing any of them.
+// setValue() is the one write: the value is checked against the schema, then the whole scene with
+// it against the loader (simcore::checkScene), so the editor never holds a scene it could not
+// reopen; a refused value pushes nothing and is reported through rejected() with the loader's
+// message. Accepted values are undoable ChangeSettings commands; writes made while a control is
+// being dragged or held (interacting = true) merge into one history entry.
 
-#include <QObject>
+#include <QAbstractListModel>
 #include <QStringList>
-#include <QVariantList>
 
 namespace simcore {
+struct SettingInfo;
 struct WorldSettings;
-}
+}  // namespace simcore
 
 namespace interplay {
 
 class SceneDocument;
 
-class SimulationSettingsModel : public QObject {
+class SimulationSettingsModel : public QAbstractListModel {
     Q_OBJECT
-    Q_PROPERTY(double gravityX READ gravityX NOTIFY changed)
-    Q_PROPERTY(double gravityY READ gravityY NOTIFY changed)
-    Q_PROPERTY(double gravityZ READ gravityZ NOTIFY changed)
-    Q_PROPERTY(double stepRate READ stepRate WRITE setStepRate NOTIFY changed)  // steps per second (Hz)
-    Q_PROPERTY(int substeps READ substeps WRITE setSubsteps NOTIFY changed)
-    Q_PROPERTY(int velocityIterations READ velocityIterations WRITE setVelocityIterations NOTIFY changed)
-    Q_PROPERTY(int positionIterations READ positionIterations WRITE setPositionIterations NOTIFY changed)
-    Q_PROPERTY(int positionCorrection READ positionCorrection WRITE setPositionCorrection NOTIFY changed)
-    Q_PROPERTY(QStringList positionCorrectionNames READ positionCorrectionNames CONSTANT)
-    Q_PROPERTY(int integrator READ integrator WRITE setIntegrator NOTIFY changed)
-    Q_PROPERTY(QStringList integratorNames READ integratorNames CONSTANT)
-    Q_PROPERTY(double linearDamping READ linearDamping WRITE setLinearDamping NOTIFY changed)
-    Q_PROPERTY(double angularDamping READ angularDamping WRITE setAngularDamping NOTIFY changed)
-    Q_PROPERTY(QStringList effectNames READ effectNames CONSTANT)
-    Q_PROPERTY(QVariantList effects READ effects NOTIFY changed)
     Q_PROPERTY(int preset READ preset WRITE setPreset NOTIFY changed)  // index, -1 when custom
     Q_PROPERTY(QStringList presetNames READ presetNames CONSTANT)
     Q_PROPERTY(bool interacting READ interacting WRITE setInteracting NOTIFY interactingChanged)
 
 public:
+    enum Role {
+        KeyRole = Qt::UserRole + 1,  // "solver.contactHertz"
+        GroupRole,                   // "Solver"
+        FirstInGroupRole,            // true for the first row of its group: where the panel heads it
+        LabelRole,                   // "Contact stiffness"
+        UnitRole,                    // "Hz", empty when dimensionless
+        DocRole,                     // one line
+        TypeRole,                    // "bool", "int", "float", "vec3" or "choice"
+        MinimumRole,                 // numbers (a vector's components); unset for bool and choice
+        MaximumRole,
+        RangeRole,                   // "(0, 10000] Hz", as the docs write it; empty for bool and choice
+        ValueRole,                   // bool, int, double, a list of 3 doubles, or a choice's index
+        ChoicesRole,                 // a choice's names, as files write them
+    };
+    Q_ENUM(Role)
+
     explicit SimulationSettingsModel(SceneDocument* document, QObject* parent = nullptr);
 
-    double gravityX() const;
-    double gravityY() const;
-    double gravityZ() const;
-    double stepRate() const;
-    int substeps() const;
-    int velocityIterations() const;
-    int positionIterations() const;
-    int positionCorrection() const;
-    QStringList positionCorrectionNames() const;
-    int integrator() const;
-    QStringList integratorNames() const;
-    double linearDamping() const;
-    double angularDamping() const;
-    QStringList effectNames() const;
-    QVariantList effects() const;
+    int rowCount(const QModelIndex& parent = {}) const override;
+    QVariant data(const QModelIndex& index, int role = Qt::DisplayRole) const override;
+    QHash<int, QByteArray> roleNames() const override;
+
+    // The schema keys of the rows, in order.
+    QStringList keys() const;
+    QVariant value(const QString& key) const;
+    // Sets the setting `key` to `value` (a vector as a list of 3 numbers, a choice as its index);
+    // returns whether it was accepted. Text that is not a number arrives as NaN and is refused.
+    Q_INVOKABLE bool setValue(const QString& key, const QVariant& value);
+
     int preset() const;
     QStringList presetNames() const;
     bool interacting() const { return m_interacting; }
-
-    Q_INVOKABLE void setGravity(double x, double y, double z);
-    Q_INVOKABLE void setEffect(int effect, bool enabled);
-    void setStepRate(double hertz);
-    void setSubsteps(int substeps);
-    void setVelocityIterations(int iterations);
-    void setPositionIterations(int iterations);
-    void setPositionCorrection(int method);
-    void setIntegrator(int method);
-    void setLinearDamping(double rate);
-    void setAngularDamping(double rate);
     void setPreset(int preset);
     void setInteracting(bool interacting);
 
@@ -80,8 +69,9 @@ signals:
 
 private:
     const simcore::WorldSettings& settings() const;
-    // Pushes the command "Change <what>" unless the engine rejects the settings.
-    void push(const QString& what, const QString& key, const simcore::WorldSettings& after);
+    // Pushes the command "Change <what>" unless the scene with `after` would not load.
+    bool push(const QString& what, const QString& key, const simcore::WorldSettings& after);
+    void refuse(const QString& what, const QString& why);
 
     SceneDocument* m_document;
     bool m_interacting = false;

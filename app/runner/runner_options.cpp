@@ -1,5 +1,6 @@
 #include "runner_options.h"
 
+#include "simcore/settings_schema.h"
 #include "simcore/world/quality_preset.h"
 
 #include <charconv>
@@ -41,8 +42,8 @@ std::optional<std::array<float, 3>> parseVector(const std::string& text) {
 
 }  // namespace
 
-const char* usageText() {
-    return "usage: interplay-run SCENE.json [--steps N | --seconds T] [--dt S] [--substeps K]\n"
+std::string usageText() {
+    std::string text = "usage: interplay-run SCENE.json [--steps N | --seconds T] [--dt S] [--substeps K]\n"
            "                    [--iterations V] [--preset NAME] [--set key.path=value]...\n"
            "                    [--force NAME=[fx,fy,fz]]...\n"
            "                    [--trace FILE.csv] [--out FILE.json] [--save FILE.json]\n"
@@ -59,7 +60,21 @@ const char* usageText() {
            "  --trace FILE.csv  per-step state of every body\n"
            "  --out FILE.json   also write the report to FILE.json\n"
            "  --save FILE.json  write the scene as run (v1) before stepping; --steps 0 converts\n"
-           "Exit codes: 0 success, 2 bad arguments, 3 unreadable scene, 4 non-finite state.\n";
+           "Exit codes: 0 success, 2 bad arguments, 3 unreadable scene, 4 non-finite state.\n"
+           "Settings (--set key=value; a vector as [x,y,z] or key.0=x, a section as a JSON object):\n"
+           "  preset  fast, balanced or accurate\n";
+    for (const simcore::SettingInfo& info : simcore::settingsSchema()) {
+        std::string accepted;
+        switch (info.type) {
+            case simcore::SettingType::Bool: accepted = "true or false"; break;
+            case simcore::SettingType::Choice: accepted = info.choiceList(); break;
+            case simcore::SettingType::Vec3: accepted = "[x, y, z], each in " + info.range.describe(); break;
+            case simcore::SettingType::Int: accepted = "integer in " + info.range.describe(); break;
+            case simcore::SettingType::Float: accepted = info.range.describe(); break;
+        }
+        text += "  " + std::string(info.key) + "  " + accepted + ": " + std::string(info.doc) + "\n";
+    }
+    return text;
 }
 
 ParseResult parseArguments(const std::vector<std::string>& arguments) {

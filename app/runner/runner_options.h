@@ -42,6 +42,7 @@ struct ParseResult {
 
 ParseResult parseArguments(const std::vector<std::string>& arguments);  // without argv[0]
 
-const char* usageText();
+// The --help text, with every setting --set takes (from the settings schema): key, range, doc.
+std::string usageText();
 
 }  // namespace runner

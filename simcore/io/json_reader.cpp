@@ -289,18 +289,6 @@ std::string typeName(const Json& value) {
     }
 }
 
-std::string formatNumber(double value) {
-    char buffer[400];
-    const auto shortest = std::to_chars(buffer, buffer + sizeof buffer, value);
-    std::string text(buffer, shortest.ptr);
-    // For people, 0.0001 and 100000 read better than 1e-04 and 1e+05; keep exponents for the rest.
-    if (text.find('e') != std::string::npos) {
-        const auto fixed = std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::fixed);
-        if (fixed.ec == std::errc() && fixed.ptr - buffer <= 8) text.assign(buffer, fixed.ptr);
-    }
-    return text;
-}
-
 // ---- Reader ----
 
 void Reader::add(Diagnostic::Severity severity, const std::string& path, std::string message) {
@@ -379,31 +367,8 @@ void Reader::checkKeys(const Json& object, const std::string& path, const std::v
 }
 
 bool Reader::checkRange(double value, const std::string& path, const Range& range) {
-    const std::string label = labelFromPath(path);
-    const std::string got = ", got " + formatNumber(value);
-    if (!std::isfinite(value)) {
-        error(path, label + " must be a finite number");
-        return false;
-    }
-    const bool belowMin = value < range.min || (range.minExclusive && value == range.min);
-    if (belowMin) {
-        if (range.min < 0.0)
-            error(path, label + " must be between " + formatNumber(range.min) + " and " + formatNumber(range.max) +
-                            range.unit + got);
-        else if (value < 0.0 && range.min == 0.0 && !range.minExclusive)
-            error(path, label + " must not be negative" + got);
-        else if (value <= 0.0)
-            error(path, label + " must be positive" + got);
-        else
-            error(path, label + " must be at least " + formatNumber(range.min) + range.unit + got);
-        return false;
-    }
-    if (value > range.max) {
-        if (range.min < 0.0)
-            error(path, label + " must be between " + formatNumber(range.min) + " and " + formatNumber(range.max) +
-                            range.unit + got);
-        else
-            error(path, label + " must be at most " + formatNumber(range.max) + range.unit + got);
+    if (auto problem = rangeProblem(labelFromPath(path), value, range)) {
+        error(path, std::move(*problem));
         return false;
     }
     return true;
@@ -432,9 +397,8 @@ std::optional<int> Reader::readInt(const Json& value, const std::string& path, i
         error(path, "expected an integer, got " + formatNumber(d));
         return std::nullopt;
     }
-    if (d < min || d > max) {
-        error(path, labelFromPath(path) + " must be between " + std::to_string(min) + " and " + std::to_string(max) +
-                        ", got " + (value.is_number_float() ? formatNumber(d) : value.dump()));
+    if (auto problem = integerRangeProblem(labelFromPath(path), d, {static_cast<double>(min), static_cast<double>(max)})) {
+        error(path, std::move(*problem));
         return std::nullopt;
     }
     return static_cast<int>(d);
@@ -597,7 +561,7 @@ bool checkMassProperties(Reader& reader, const BodyCreationSettings& body, const
     if (!body.mass) {
         const double mass = double(body.density) * double(volume(body.shape));
         if (!(mass >= limits::kMass.min && mass <= limits::kMass.max)) {
-            reader.error(path, "density " + formatNumber(body.density) + limits::kDensity.unit + " gives this " +
+            reader.error(path, "density " + formatNumber(body.density) + " " + std::string(limits::kDensity.unit) + " gives this " +
                                    std::string(shapeTypeName(body.shape.type)) + " a mass of " + approx(mass) +
                                    " kg; the mass must be between " + formatNumber(limits::kMass.min) + " and " +
                                    formatNumber(limits::kMass.max) + " kg (give another density, or a mass)");

@@ -5,6 +5,7 @@
 
 #include "simcore/io/scene_io.h"
 #include "simcore/math/math.h"
+#include "simcore/settings_schema.h"
 
 #include <nlohmann/json.hpp>
 
@@ -35,7 +36,7 @@ constexpr int kMaxNestingDepth = 64;
 //  - a document of more than kMaxJsonValues values (numbers, strings, objects, ... counted one
 //    each) is refused: enough for kMaxArrayElements fully written bodies, and it caps the parsed
 //    document at a few hundred MB.
-constexpr std::size_t kMaxTextBytes = 64u * 1024u * 1024u;
+constexpr std::size_t kMaxTextBytes = kMaxSceneFileBytes;
 constexpr std::size_t kMaxStringBytes = 4096;
 constexpr std::size_t kMaxArrayElements = 100000;
 constexpr std::size_t kMaxJsonValues = 4000000;
@@ -52,17 +53,10 @@ std::string childPath(const std::string& parent, std::size_t index);
 // "an object", "a number", ... for "expected X, got Y" messages.
 std::string typeName(const Json& value);
 
-// Short text for messages: the shortest that reads back as the same double, in plain decimals when
-// that is short (0.0001, 100000) and with an exponent otherwise (1e-09, 1e+300).
-std::string formatNumber(double value);
+using simcore::formatNumber;
 
-// Accepted range of a number. `unit` (with its leading space, e.g. " m") is shown in messages.
-struct Range {
-    double min;
-    double max;
-    bool minExclusive;  // only for min == 0: the value must be positive, not merely non-negative
-    const char* unit = "";
-};
+// Accepted range of a number (settings_schema.h); its unit is shown in messages.
+using Range = NumberRange;
 
 class Reader {
 public:
@@ -128,35 +122,9 @@ private:
     bool finished_ = false;
 };
 
-// Limits shared by the v1 loader and the thesis importer (documented in scene_io.cpp).
+// Limits of the loader beyond the schema's (settings_schema.h has the ranges of values).
 namespace limits {
-inline constexpr Range kSize{1e-4, 1e5, false, " m"};            // half-extents, radii, half-heights
-inline constexpr Range kCoordinate{-1e6, 1e6, false, " m"};     // positions and hull points
-inline constexpr Range kMass{1e-6, 1e9, false, " kg"};
-inline constexpr Range kDensity{1e-3, 1e6, false, " kg/m^3"};
-inline constexpr Range kFriction{0.0, 100.0, false};
-inline constexpr Range kRestitution{0.0, 1.0, false};
-inline constexpr Range kRollingResistance{0.0, 100.0, false};
-inline constexpr Range kLinearSpeed{-1e4, 1e4, false, " m/s"};
-inline constexpr Range kAngularSpeed{-1e4, 1e4, false, " rad/s"};
-inline constexpr Range kColor{0.0, 1.0, false};
-inline constexpr Range kQuaternionComponent{-1e6, 1e6, false};
-inline constexpr Range kGravity{-1e4, 1e4, false, " m/s^2"};
-inline constexpr Range kTimeStep{1e-6, 1.0, false, " s"};
-inline constexpr Range kDampingRate{0.0, 1e3, false, " 1/s"};
-inline constexpr Range kSleepSpeed{0.0, 1e3, false};
-inline constexpr Range kTimeToSleep{0.0, 1e6, false, " s"};
-inline constexpr Range kContactHertz{0.0, 1e4, true, " Hz"};
-inline constexpr Range kDampingRatio{0.0, 1e4, false};
-inline constexpr Range kPushVelocity{0.0, 1e4, true, " m/s"};
-inline constexpr Range kBaumgarte{0.0, 1.0, false};
-inline constexpr Range kContactDistance{0.0, 10.0, false, " m"};   // speculative distance, slop
-inline constexpr Range kRestitutionThreshold{0.0, 1e4, false, " m/s"};
-inline constexpr int kMinSubsteps = 1, kMaxSubsteps = 64;
-inline constexpr int kMinVelocityIterations = 1, kMaxVelocityIterations = 1000;
-inline constexpr int kMinContactsPerBody = 1, kMaxContactsPerBody = 1000000;
-inline constexpr int kMinPositionIterations = 0, kMaxPositionIterations = 1000;
-inline constexpr std::size_t kMaxHullPoints = 4096;
+using namespace simcore::limits;
 inline constexpr std::size_t kMaxBodies = kMaxArrayElements;
 // Smallest principal moment of inertia of a dynamic body, from its shape and mass: its inverse must
 // stay far inside float range. The engine inverts the tensor in double and solves the gyroscopic

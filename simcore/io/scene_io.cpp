@@ -1,43 +1,29 @@
 // Scene files, format v1: strict loading with a diagnostic per problem, exact saving, atomic writes.
 //
-// Validation rules (each violation is an error at the value's JSON pointer; all are collected, up
-// to io_detail::kMaxDiagnostics):
+// What a file may hold - every settings key and body, shape and joint property with its accepted
+// range - is simcore/settings_schema.h; the settings are read and written by loops over its table.
+// The rules beyond single values (each violation is an error at the value's JSON pointer; all are
+// collected, up to io_detail::kMaxDiagnostics):
 //  - required: "format" ("interplay.scene"), "version" (1; newer versions are refused), "bodies",
-//    each body's "shape", its "type" and the dimensions that type needs.
-//  - sizes (halfExtents, radius, halfHeight) in [1e-4, 1e5] m; positions and hull points within
-//    +-1e6 m; mass in [1e-6, 1e9] kg; density in [1e-3, 1e6] kg/m^3 (mass and density are
-//    exclusive); friction in [0, 100]; restitution in [0, 1]; rollingResistance in [0, 100] (optional,
-//    default 0, written only when set); velocities within +-1e4 m/s and
-//    rad/s; colour components in [0, 1]. Outside these ranges float precision, or the solver,
-//    would give garbage, so a clear refusal is kinder than a strange simulation.
+//    each body's "shape", its "type" and the dimensions that type needs. Mass and density are
+//    exclusive; rollingResistance is written only when set.
 //  - orientation [w, x, y, z]: finite and not (near) zero length; a quaternion more than 1e-3
 //    from unit length is normalised with a warning (smaller deviations silently).
-//  - settings: gravity components within +-1e4 m/s^2; timeStep in [1e-6, 1] s; substeps 1..64;
-//    solver.velocityIterations 1..1000; solver.positionIterations 0..1000 (0 switches position
-//    correction off); damping rates in [0, 1000] 1/s; sleep speeds in [0, 1000]; timeToSleep in
-//    [0, 1e6] s. Every settings key is optional (defaults from WorldSettings).
-//  - convex hulls: 4..4096 points, and ConvexHull::build must succeed.
+//  - convex hulls: ConvexHull::build must succeed.
 //  - what a dynamic body's values come to together (both formats): the mass a density gives
-//    (density x volume) in [1e-6, 1e9] kg like a given mass; the smallest principal moment of
-//    inertia at least 1e-30 kg m^2 (its inverse must stay inside float range).
-//  - size (json_reader.h, checked while parsing, so memory stays bounded): text up to 64 MiB;
-//    nesting depth 64; strings and keys up to 4096 bytes; arrays up to 100000 elements (so at
-//    most 100000 bodies); at most 4 million JSON values in all.
+//    (density x volume) within the mass range; the smallest principal moment of inertia at least
+//    1e-30 kg m^2 (its inverse must stay inside float range).
+//  - size (json_reader.h, checked while parsing, so memory stays bounded).
 //  - unknown keys are warnings: the scene loads, the key is reported and dropped.
 //  - static and kinematic bodies may carry mass or density: the value is validated and kept (so
 //    switching such a body to dynamic in the editor, or saving it, does not lose it), but the
 //    world ignores it. No warning, since nothing is lost.
 //  - a body without a name is called "body <index>".
-//  - joints: "type" (ball, hinge, slider, fixed, distance), "bodyA" (a body's name) and "anchor"
-//    are required; "bodyB" is a body's name, or null / absent for the world, and not bodyA; a
-//    name a joint uses must belong to exactly one body. Hinges and sliders require "axis" (not
-//    zero) and take "limits" {lower, upper} (lower <= upper; a hinge's within [-pi, pi] rad) and
-//    "motor" {speed, maxTorque} (hinge) / {speed, maxForce} (slider); distance joints require
-//    "anchorB" (at least 0.1 mm from anchor) and take "spring" {hertz > 0, dampingRatio},
-//    "minLength", "maxLength" (in [0, 1e6] m, min <= max once defaulted, see joint.h). Anchors and
-//    axes are world coordinates within +-1e6; motor speeds within +-1e4, forces in [0, 1e12].
-//    Keys a joint type does not take are warnings, like unknown keys.
-//  - settings.joint: hertz in (0, 1e4] Hz, dampingRatio in [0, 1e4].
+//  - joints: "type", "bodyA" (a body's name) and "anchor" are required; "bodyB" is a body's name,
+//    or null / absent for the world, and not bodyA; a name a joint uses must belong to exactly one
+//    body. Hinges and sliders require a non-zero "axis"; limits need lower <= upper; distance
+//    joints require "anchorB" at least 0.1 mm from anchor, and min <= max length once defaulted
+//    (see joint.h). Keys a joint type does not take are warnings, like unknown keys.
 //  - settings.preset: "fast", "balanced" or "accurate" (quality_preset.h), applied before every other
 //    settings key, which then override it. Saving writes it when the settings match a preset.
 
@@ -53,6 +39,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cctype>
 #include <cstring>
 #include <random>
 #include <system_error>
@@ -62,20 +49,68 @@ namespace simcore {
 using io_detail::childPath;
 using io_detail::Json;
 using io_detail::Reader;
-namespace limits = io_detail::limits;
 
 namespace {
 
 constexpr const char* kFormatTag = "interplay.scene";
 constexpr int kFormatVersion = 1;
-constexpr std::uintmax_t kMaxFileBytes = io_detail::kMaxTextBytes;  // far beyond any real scene
 
 // ---- reading ----
 
+// The first segment of a dotted settings key ("solver" of "solver.contactHertz"), and the rest.
+std::pair<std::string_view, std::string_view> splitKey(std::string_view key) {
+    const std::size_t dot = key.find('.');
+    if (dot == std::string_view::npos) return {key, {}};
+    return {key.substr(0, dot), key.substr(dot + 1)};
+}
+
+// The keys one object of the "settings" object takes: the top-level object's ("" section: preset,
+// gravity, ..., solver, ...) or a section's ("solver": velocityIterations, ...).
+std::vector<std::string_view> settingsKeysOf(std::string_view section) {
+    std::vector<std::string_view> keys;
+    if (section.empty()) keys.push_back("preset");
+    for (const SettingInfo& info : settingsSchema()) {
+        const auto [first, rest] = splitKey(info.key);
+        const std::string_view key = section.empty() ? first : (first == section && !rest.empty() ? rest : "");
+        if (!key.empty() && std::find(keys.begin(), keys.end(), key) == keys.end()) keys.push_back(key);
+    }
+    return keys;
+}
+
+// Reads one setting's value at `path` into `out`; reports what is wrong with it.
+void readSetting(Reader& r, const SettingInfo& info, const Json& value, const std::string& path, WorldSettings& out) {
+    switch (info.type) {
+        case SettingType::Bool:
+            if (const auto v = r.readBool(value, path)) info.set(out, *v);
+            break;
+        case SettingType::Int:
+            if (const auto v = r.readInt(value, path, static_cast<int>(info.range.min), static_cast<int>(info.range.max)))
+                info.set(out, *v);
+            break;
+        case SettingType::Float:
+            if (const auto v = r.readFloat(value, path, info.range)) info.set(out, *v);
+            break;
+        case SettingType::Vec3:
+            if (const auto v = r.readVec3(value, path, info.range)) info.set(out, *v);
+            break;
+        case SettingType::Choice:
+            if (const auto text = r.readString(value, path)) {
+                const auto known = std::find(info.choices.begin(), info.choices.end(), *text);
+                if (known != info.choices.end()) {
+                    info.set(out, static_cast<int>(known - info.choices.begin()));
+                } else {
+                    std::string what(info.label);  // "unknown position correction 'x'"
+                    what[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(what[0])));
+                    r.error(path, "unknown " + what + " '" + *text + "' (expected " + info.choiceList() + ")");
+                }
+            }
+            break;
+    }
+}
+
 void readSettings(Reader& r, const Json& s, const std::string& path, WorldSettings& out) {
     if (!r.expectObject(s, path)) return;
-    r.checkKeys(s, path,
-                {"preset", "gravity", "timeStep", "substeps", "integrator", "solver", "contact", "joint", "damping", "sleep", "effects"});
+    r.checkKeys(s, path, settingsKeysOf(""));
     // The preset first, so that the explicit keys read below override its values.
     if (const Json* preset = Reader::find(s, "preset")) {
         const std::string p = childPath(path, "preset");
@@ -86,101 +121,25 @@ void readSettings(Reader& r, const Json& s, const std::string& path, WorldSettin
                 r.error(p, "unknown quality preset '" + *name + "' (expected fast, balanced or accurate)");
         }
     }
-    r.optionalVec3(s, path, "gravity", limits::kGravity, out.gravity);
-    r.optionalFloat(s, path, "timeStep", limits::kTimeStep, out.timeStep);
-    r.optionalInt(s, path, "substeps", limits::kMinSubsteps, limits::kMaxSubsteps, out.substeps);
-    if (const Json* integrator = Reader::find(s, "integrator")) {
-        const std::string p = childPath(path, "integrator");
-        if (const auto text = r.readString(*integrator, p)) {
-            bool known = false;
-            for (Integrator method : {Integrator::SymplecticEuler, Integrator::ExplicitEuler, Integrator::VelocityVerlet}) {
-                if (*text != integratorName(method)) continue;
-                out.integrator = method;
-                known = true;
-            }
-            if (!known)
-                r.error(p, "unknown integrator '" + *text +
-                               "' (expected symplecticEuler, explicitEuler or velocityVerlet)");
+    // In schema order; a section ("solver") is checked once, when its first key comes up.
+    std::string_view section;
+    const Json* sectionObject = nullptr;
+    for (const SettingInfo& info : settingsSchema()) {
+        const auto [first, rest] = splitKey(info.key);
+        if (rest.empty()) {
+            if (const Json* value = Reader::find(s, first)) readSetting(r, info, *value, childPath(path, first), out);
+            continue;
         }
-    }
-
-    if (const Json* solver = Reader::find(s, "solver")) {
-        const std::string p = childPath(path, "solver");
-        if (r.expectObject(*solver, p)) {
-            r.checkKeys(*solver, p, {"velocityIterations", "positionIterations", "positionCorrection", "contactHertz",
-                                     "contactDampingRatio", "maxPushVelocity", "baumgarte"});
-            r.optionalInt(*solver, p, "velocityIterations", limits::kMinVelocityIterations,
-                          limits::kMaxVelocityIterations, out.solver.velocityIterations);
-            r.optionalInt(*solver, p, "positionIterations", limits::kMinPositionIterations,
-                          limits::kMaxPositionIterations, out.solver.positionIterations);
-            if (const Json* method = Reader::find(*solver, "positionCorrection")) {
-                const std::string mp = childPath(p, "positionCorrection");
-                if (const auto text = r.readString(*method, mp)) {
-                    if (*text == positionCorrectionName(PositionCorrection::SoftStep))
-                        out.solver.positionCorrection = PositionCorrection::SoftStep;
-                    else if (*text == positionCorrectionName(PositionCorrection::Baumgarte))
-                        out.solver.positionCorrection = PositionCorrection::Baumgarte;
-                    else
-                        r.error(mp, "unknown position correction '" + *text + "' (expected softStep or baumgarte)");
-                }
-            }
-            r.optionalFloat(*solver, p, "contactHertz", limits::kContactHertz, out.solver.contactHertz);
-            r.optionalFloat(*solver, p, "contactDampingRatio", limits::kDampingRatio, out.solver.contactDampingRatio);
-            r.optionalFloat(*solver, p, "maxPushVelocity", limits::kPushVelocity, out.solver.maxPushVelocity);
-            r.optionalFloat(*solver, p, "baumgarte", limits::kBaumgarte, out.solver.baumgarte);
+        const std::string sectionPath = childPath(path, first);
+        if (first != section) {
+            section = first;
+            sectionObject = Reader::find(s, first);
+            if (sectionObject && !r.expectObject(*sectionObject, sectionPath)) sectionObject = nullptr;
+            if (sectionObject) r.checkKeys(*sectionObject, sectionPath, settingsKeysOf(first));
         }
-    }
-    if (const Json* contact = Reader::find(s, "contact")) {
-        const std::string p = childPath(path, "contact");
-        if (r.expectObject(*contact, p)) {
-            r.checkKeys(*contact, p, {"speculativeDistance", "linearSlop", "restitutionThreshold", "maxContactsPerBody"});
-            r.optionalFloat(*contact, p, "speculativeDistance", limits::kContactDistance, out.contact.speculativeDistance);
-            r.optionalFloat(*contact, p, "linearSlop", limits::kContactDistance, out.contact.linearSlop);
-            r.optionalFloat(*contact, p, "restitutionThreshold", limits::kRestitutionThreshold,
-                            out.contact.restitutionThreshold);
-            r.optionalInt(*contact, p, "maxContactsPerBody", limits::kMinContactsPerBody, limits::kMaxContactsPerBody,
-                          out.contact.maxContactsPerBody);
-        }
-    }
-    if (const Json* joint = Reader::find(s, "joint")) {
-        const std::string p = childPath(path, "joint");
-        if (r.expectObject(*joint, p)) {
-            r.checkKeys(*joint, p, {"hertz", "dampingRatio"});
-            r.optionalFloat(*joint, p, "hertz", limits::kContactHertz, out.joint.hertz);
-            r.optionalFloat(*joint, p, "dampingRatio", limits::kDampingRatio, out.joint.dampingRatio);
-        }
-    }
-    if (const Json* damping = Reader::find(s, "damping")) {
-        const std::string p = childPath(path, "damping");
-        if (r.expectObject(*damping, p)) {
-            r.checkKeys(*damping, p, {"linear", "angular"});
-            r.optionalFloat(*damping, p, "linear", limits::kDampingRate, out.damping.linear);
-            r.optionalFloat(*damping, p, "angular", limits::kDampingRate, out.damping.angular);
-        }
-    }
-    if (const Json* sleep = Reader::find(s, "sleep")) {
-        const std::string p = childPath(path, "sleep");
-        if (r.expectObject(*sleep, p)) {
-            r.checkKeys(*sleep, p, {"enabled", "linearVelocity", "angularVelocity", "timeToSleep"});
-            r.optionalBool(*sleep, p, "enabled", out.sleep.enabled);
-            r.optionalFloat(*sleep, p, "linearVelocity", limits::kSleepSpeed, out.sleep.linearVelocity);
-            r.optionalFloat(*sleep, p, "angularVelocity", limits::kSleepSpeed, out.sleep.angularVelocity);
-            r.optionalFloat(*sleep, p, "timeToSleep", limits::kTimeToSleep, out.sleep.timeToSleep);
-        }
-    }
-    if (const Json* effects = Reader::find(s, "effects")) {
-        const std::string p = childPath(path, "effects");
-        if (r.expectObject(*effects, p)) {
-            std::vector<std::string_view> names;
-            for (int i = 0; i < kEffectCount; ++i) {
-                const Effect e = static_cast<Effect>(i);
-                names.push_back(effectName(e));
-                bool enabled = out.effects[e];
-                r.optionalBool(*effects, p, effectName(e), enabled);
-                out.effects[e] = enabled;
-            }
-            r.checkKeys(*effects, p, names);
-        }
+        if (!sectionObject) continue;
+        if (const Json* value = Reader::find(*sectionObject, rest))
+            readSetting(r, info, *value, childPath(sectionPath, rest), out);
     }
 }
 
@@ -197,21 +156,23 @@ std::optional<Shape> readShape(Reader& r, const Json& j, const std::string& path
     };
 
     if (*type == "box") {
-        r.checkKeys(j, path, {"type", "halfExtents"}, "for a box shape");
+        r.checkKeys(j, path, propertyKeys(PropertyOwner::Box), "for a box shape");
         const Json* v = r.require(j, path, "halfExtents");
         const auto halfExtents = v ? r.readVec3(*v, childPath(path, "halfExtents"), limits::kSize) : std::nullopt;
         if (halfExtents) return Shape::box(*halfExtents);
     } else if (*type == "sphere") {
-        r.checkKeys(j, path, {"type", "radius"}, "for a sphere shape");
+        r.checkKeys(j, path, propertyKeys(PropertyOwner::Sphere), "for a sphere shape");
         if (const auto radius = size("radius")) return Shape::sphere(*radius);
     } else if (*type == "capsule" || *type == "cylinder") {
-        r.checkKeys(j, path, {"type", "radius", "halfHeight"}, *type == "capsule" ? "for a capsule shape" : "for a cylinder shape");
+        const bool capsule = *type == "capsule";
+        r.checkKeys(j, path, propertyKeys(capsule ? PropertyOwner::Capsule : PropertyOwner::Cylinder),
+                    capsule ? "for a capsule shape" : "for a cylinder shape");
         const auto radius = size("radius");
         const auto halfHeight = size("halfHeight");
         if (radius && halfHeight)
-            return *type == "capsule" ? Shape::capsule(*radius, *halfHeight) : Shape::cylinder(*radius, *halfHeight);
+            return capsule ? Shape::capsule(*radius, *halfHeight) : Shape::cylinder(*radius, *halfHeight);
     } else if (*type == "convexHull") {
-        r.checkKeys(j, path, {"type", "points"}, "for a convexHull shape");
+        r.checkKeys(j, path, propertyKeys(PropertyOwner::ConvexHull), "for a convexHull shape");
         const Json* points = r.require(j, path, "points");
         const std::string p = childPath(path, "points");
         if (!points || !r.expectArray(*points, p)) return std::nullopt;
@@ -256,9 +217,7 @@ std::optional<Quat> readOrientation(Reader& r, const Json& v, const std::string&
 
 std::optional<SceneBody> readBody(Reader& r, const Json& b, const std::string& path, std::size_t index) {
     if (!r.expectObject(b, path)) return std::nullopt;
-    r.checkKeys(b, path,
-                {"name", "motion", "shape", "position", "orientation", "linearVelocity", "angularVelocity", "mass",
-                 "density", "friction", "restitution", "rollingResistance", "ccd", "color"});
+    r.checkKeys(b, path, propertyKeys(PropertyOwner::Body));
     const int errorsBefore = r.errorCount();
     SceneBody out;
     BodyCreationSettings& s = out.body;
@@ -307,11 +266,6 @@ std::optional<SceneBody> readBody(Reader& r, const Json& b, const std::string& p
     return out;
 }
 
-// Joint ranges (the rest are shared with bodies and settings in json_reader.h).
-constexpr io_detail::Range kHingeAngle{-static_cast<double>(kPi), static_cast<double>(kPi), false, " rad"};
-constexpr io_detail::Range kMotorForce{0.0, 1e12, false};
-constexpr io_detail::Range kJointLength{0.0, 1e6, false, " m"};
-
 // Reads a required number into `target`; false (and reported) when missing or invalid.
 bool requiredFloat(Reader& r, const Json& object, const std::string& path, std::string_view key,
                    const io_detail::Range& range, float& target) {
@@ -320,6 +274,18 @@ bool requiredFloat(Reader& r, const Json& object, const std::string& path, std::
 }
 
 const char* motorForceKey(JointType type) { return type == JointType::Hinge ? "maxTorque" : "maxForce"; }
+
+// Whose keys a joint of `type` takes in the property schema.
+PropertyOwner jointOwner(JointType type) {
+    switch (type) {
+        case JointType::Hinge: return PropertyOwner::Hinge;
+        case JointType::Slider: return PropertyOwner::Slider;
+        case JointType::Distance: return PropertyOwner::Distance;
+        case JointType::Ball:
+        case JointType::Fixed: break;
+    }
+    return PropertyOwner::Joint;
+}
 
 // Body names as the file gives them (index order, the loader's default for a nameless body), so
 // joints resolve against the file even when a body failed to load.
@@ -369,10 +335,8 @@ std::optional<SceneJoint> readJoint(Reader& r, const Json& j, const std::string&
     const bool hingeOrSlider = s.type == JointType::Hinge || s.type == JointType::Slider;
     const bool distance = s.type == JointType::Distance;
 
-    std::vector<std::string_view> keys{"name", "type", "bodyA", "bodyB", "anchor", "collideConnected"};
-    if (hingeOrSlider) keys.insert(keys.end(), {"axis", "limits", "motor"});
-    if (distance) keys.insert(keys.end(), {"anchorB", "spring", "minLength", "maxLength"});
-    r.checkKeys(j, path, keys, "for a " + *type + " joint");
+    const PropertyOwner owner = jointOwner(s.type);
+    r.checkKeys(j, path, propertyKeys(owner), "for a " + *type + " joint");
 
     s.name = "joint " + std::to_string(index);
     if (const Json* name = Reader::find(j, "name"))
@@ -403,11 +367,10 @@ std::optional<SceneJoint> readJoint(Reader& r, const Json& j, const std::string&
         if (const Json* value = Reader::find(j, "limits")) {
             const std::string lp = childPath(path, "limits");
             if (r.expectObject(*value, lp)) {
-                r.checkKeys(*value, lp, {"lower", "upper"});
-                const io_detail::Range& range = s.type == JointType::Hinge ? kHingeAngle : limits::kCoordinate;
+                r.checkKeys(*value, lp, propertyKeys(owner, "limits"));
                 JointLimits l;
-                const bool lowerRead = requiredFloat(r, *value, lp, "lower", range, l.lower);
-                if (requiredFloat(r, *value, lp, "upper", range, l.upper) && lowerRead) {
+                const bool lowerRead = requiredFloat(r, *value, lp, "lower", propertyRange(owner, "limits.lower"), l.lower);
+                if (requiredFloat(r, *value, lp, "upper", propertyRange(owner, "limits.upper"), l.upper) && lowerRead) {
                     if (l.lower > l.upper)
                         r.error(lp, "lower (" + io_detail::formatNumber(l.lower) + ") exceeds upper (" +
                                         io_detail::formatNumber(l.upper) + ")");
@@ -420,11 +383,11 @@ std::optional<SceneJoint> readJoint(Reader& r, const Json& j, const std::string&
             const std::string mp = childPath(path, "motor");
             if (r.expectObject(*value, mp)) {
                 const char* forceKey = motorForceKey(s.type);
-                r.checkKeys(*value, mp, {"speed", forceKey});
-                const io_detail::Range& speedRange = s.type == JointType::Hinge ? limits::kAngularSpeed : limits::kLinearSpeed;
+                r.checkKeys(*value, mp, propertyKeys(owner, "motor"));
                 JointMotor m;
-                const bool speedRead = requiredFloat(r, *value, mp, "speed", speedRange, m.speed);
-                if (requiredFloat(r, *value, mp, forceKey, kMotorForce, m.maxForce) && speedRead) s.motor = m;
+                const bool speedRead = requiredFloat(r, *value, mp, "speed", propertyRange(owner, "motor.speed"), m.speed);
+                const NumberRange& forceRange = propertyRange(owner, std::string("motor.") + forceKey);
+                if (requiredFloat(r, *value, mp, forceKey, forceRange, m.maxForce) && speedRead) s.motor = m;
             }
         }
     }
@@ -440,16 +403,16 @@ std::optional<SceneJoint> readJoint(Reader& r, const Json& j, const std::string&
         if (const Json* value = Reader::find(j, "spring")) {
             const std::string sp = childPath(path, "spring");
             if (r.expectObject(*value, sp)) {
-                r.checkKeys(*value, sp, {"hertz", "dampingRatio"});
+                r.checkKeys(*value, sp, propertyKeys(owner, "spring"));
                 JointSpring spring;
-                const bool hertzRead = requiredFloat(r, *value, sp, "hertz", limits::kContactHertz, spring.hertz);
+                const bool hertzRead = requiredFloat(r, *value, sp, "hertz", limits::kSpringHertz, spring.hertz);
                 if (r.optionalFloat(*value, sp, "dampingRatio", limits::kDampingRatio, spring.dampingRatio) && hertzRead)
                     s.spring = spring;
             }
         }
         float length = 0.0f;
-        if (Reader::find(j, "minLength") && r.optionalFloat(j, path, "minLength", kJointLength, length)) s.minLength = length;
-        if (Reader::find(j, "maxLength") && r.optionalFloat(j, path, "maxLength", kJointLength, length)) s.maxLength = length;
+        if (Reader::find(j, "minLength") && r.optionalFloat(j, path, "minLength", limits::kJointLength, length)) s.minLength = length;
+        if (Reader::find(j, "maxLength") && r.optionalFloat(j, path, "maxLength", limits::kJointLength, length)) s.maxLength = length;
         if (r.errorCount() == errorsBefore) {
             const DistanceLengths lengths = distanceLengths(s);
             if (lengths.min > lengths.max)
@@ -537,37 +500,27 @@ OrderedJson number(float value) {
 
 OrderedJson vec3(const Vec3& v) { return OrderedJson::array({number(v.x), number(v.y), number(v.z)}); }
 
+OrderedJson settingValueJson(const SettingInfo& info, const SettingValue& value) {
+    switch (info.type) {
+        case SettingType::Bool: return std::get<bool>(value);
+        case SettingType::Int: return std::get<int>(value);
+        case SettingType::Float: return number(std::get<float>(value));
+        case SettingType::Vec3: return vec3(std::get<Vec3>(value));
+        case SettingType::Choice: return std::string(info.choices[static_cast<std::size_t>(std::get<int>(value))]);
+    }
+    return nullptr;
+}
+
 OrderedJson settingsJson(const WorldSettings& s) {
     OrderedJson j = OrderedJson::object();
     // Only a label: every value it sets is written below too, so loading gives the same numbers.
     if (const auto preset = matchingQualityPreset(s)) j["preset"] = std::string(qualityPresetName(*preset));
-    j["gravity"] = vec3(s.gravity);
-    j["timeStep"] = number(s.timeStep);
-    j["substeps"] = s.substeps;
-    j["integrator"] = integratorName(s.integrator);
-    j["solver"] = {{"velocityIterations", s.solver.velocityIterations},
-                   {"positionIterations", s.solver.positionIterations},
-                   {"positionCorrection", positionCorrectionName(s.solver.positionCorrection)},
-                   {"contactHertz", number(s.solver.contactHertz)},
-                   {"contactDampingRatio", number(s.solver.contactDampingRatio)},
-                   {"maxPushVelocity", number(s.solver.maxPushVelocity)},
-                   {"baumgarte", number(s.solver.baumgarte)}};
-    j["contact"] = {{"speculativeDistance", number(s.contact.speculativeDistance)},
-                    {"linearSlop", number(s.contact.linearSlop)},
-                    {"restitutionThreshold", number(s.contact.restitutionThreshold)},
-                    {"maxContactsPerBody", s.contact.maxContactsPerBody}};
-    j["joint"] = {{"hertz", number(s.joint.hertz)}, {"dampingRatio", number(s.joint.dampingRatio)}};
-    j["damping"] = {{"linear", number(s.damping.linear)}, {"angular", number(s.damping.angular)}};
-    j["sleep"] = {{"enabled", s.sleep.enabled},
-                  {"linearVelocity", number(s.sleep.linearVelocity)},
-                  {"angularVelocity", number(s.sleep.angularVelocity)},
-                  {"timeToSleep", number(s.sleep.timeToSleep)}};
-    OrderedJson effects = OrderedJson::object();
-    for (int i = 0; i < kEffectCount; ++i) {
-        const Effect e = static_cast<Effect>(i);
-        effects[std::string(effectName(e))] = s.effects[e];
+    for (const SettingInfo& info : settingsSchema()) {
+        const auto [first, rest] = splitKey(info.key);
+        OrderedJson value = settingValueJson(info, info.get(s));
+        if (rest.empty()) j[std::string(first)] = std::move(value);
+        else j[std::string(first)][std::string(rest)] = std::move(value);
     }
-    j["effects"] = std::move(effects);
     return j;
 }
 
@@ -756,7 +709,7 @@ SceneLoadResult loadSceneFile(const std::filesystem::path& path) {
     for (;;) {
         const std::size_t n = std::fread(buffer, 1, sizeof buffer, f);
         text.append(buffer, n);
-        if (text.size() > kMaxFileBytes) {
+        if (text.size() > kMaxSceneFileBytes) {
             tooLarge = true;
             break;
         }
@@ -765,7 +718,7 @@ SceneLoadResult loadSceneFile(const std::filesystem::path& path) {
     const bool readError = std::ferror(f) != 0;
     const int readErrno = errno;
     std::fclose(f);
-    if (tooLarge) return fail("the file is larger than " + std::to_string(kMaxFileBytes >> 20) + " MiB; it is not a scene");
+    if (tooLarge) return fail("the file is larger than " + std::to_string(kMaxSceneFileBytes >> 20) + " MiB; it is not a scene");
     if (readError) return fail("cannot read the scene: " + osError(readErrno));
     return parseScene(text, name);
 }
@@ -835,6 +788,31 @@ std::optional<std::string> saveSceneFile(const Scene& scene, const std::filesyst
     return failure(osError(error == 0 ? EIO : error));
 }
 
+std::vector<Diagnostic> checkScene(const Scene& scene) {
+    // The one thing a file cannot say wrong (it names bodies), so the text below could not show it.
+    for (std::size_t i = 0; i < scene.joints.size(); ++i) {
+        const SceneJoint& joint = scene.joints[i];
+        if (joint.bodyA < scene.bodies.size() && (!joint.bodyB || *joint.bodyB < scene.bodies.size())) continue;
+        Diagnostic missing;
+        missing.path = childPath("/joints", i);
+        missing.message = "a body of the joint is missing";
+        return {missing};
+    }
+    // The loader's own rules, by the loader: no second copy of them to drift apart.
+    return parseScene(serializeScene(scene), "").diagnostics;
+}
+
+std::vector<std::string> writtenSettingsKeys(const WorldSettings& settings) {
+    std::vector<std::string> keys;
+    const OrderedJson written = settingsJson(settings);
+    for (const auto& [key, value] : written.items()) {
+        if (!value.is_object()) keys.push_back(key);
+        else
+            for (const auto& [inner, unused] : value.items()) keys.push_back(key + "." + inner);
+    }
+    return keys;
+}
+
 std::optional<std::string> applySettingOverride(Scene& scene, std::string_view assignment) {
     const std::size_t eq = assignment.find('=');
     if (eq == std::string_view::npos || eq == 0)
@@ -853,8 +831,9 @@ std::optional<std::string> applySettingOverride(Scene& scene, std::string_view a
         return std::nullopt;
     }
 
-    // Work on the settings as they would be saved, so every key the file format has can be set,
-    // and the new value goes through exactly the validation a file would.
+    // Work on the settings as they would be saved (every schema key, written by the schema's loop),
+    // so exactly the schema's keys, their sections and vector components can be set, and the new
+    // value goes through the validation a file would.
     Json settings = Json::parse(settingsJson(scene.settings).dump());
     Json* node = &settings;
     std::size_t start = 0;

@@ -4,6 +4,7 @@
 
 #include "simcore/io/scene.h"
 
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -33,6 +34,9 @@ struct SceneLoadResult {
 
 enum class SceneFormat { V1, Thesis };
 
+// Scene text longer than this is refused (far beyond any real scene; it bounds memory).
+inline constexpr std::uintmax_t kMaxSceneFileBytes = 64u * 1024u * 1024u;
+
 // Parses scene text; the format is detected ("format": "interplay.scene" is v1, an "objects" array
 // is the thesis format). `fileName` is used in diagnostics only.
 SceneLoadResult parseScene(std::string_view text, std::string_view fileName);
@@ -44,6 +48,15 @@ std::string serializeScene(const Scene& scene);
 // Writes atomically: to a temporary file beside the target, then renamed over it, so a failure
 // never leaves a half-written file. Returns an error message, or nothing on success.
 std::optional<std::string> saveSceneFile(const Scene& scene, const std::filesystem::path& path);
+
+// What the loader would report about `scene` if it were saved and opened again: every edit the
+// editor makes is checked with this, so it never holds a scene it could not reopen. Diagnostics
+// carry the JSON path of the value (as in the file the scene would save to) and no file name.
+std::vector<Diagnostic> checkScene(const Scene& scene);
+
+// The keys of the "settings" object a saved file would hold for `settings`, dotted as in
+// settingsSchema() ("solver.contactHertz"), plus "preset" when the settings match one.
+std::vector<std::string> writtenSettingsKeys(const WorldSettings& settings);
 
 // Sets one settings value from text, as the runner's `--set key.path=value` does, e.g.
 // "solver.velocityIterations=20", "gravity=[0,-1.62,0]", "effects.friction=false". The value is

@@ -50,7 +50,7 @@ struct ThesisDefaults {
 
 constexpr Range kRetention{0.0, 1.0, true};           // per-second velocity retention factor
 constexpr Range kTimeScale{0.0, 1e3, true};
-constexpr Range kSleepThreshold{0.0, 1e6, false};     // squared speed: sqrt(1e6) = kSleepSpeed.max
+constexpr Range kSleepThreshold{0.0, 1e6, false};     // squared speed: sqrt(1e6) is the v1 sleep speeds' maximum
 constexpr Range kScale{2e-4, 2e5, false};             // unit shapes halved give limits::kSize
 constexpr Range kAngleDegrees{-1e5, 1e5, false};
 
@@ -83,7 +83,7 @@ void readSettings(Reader& r, const Json& s, WorldSettings& out, ThesisDefaults& 
         }
     }
     if (const Json* gravity = Reader::find(s, "gravity"))
-        if (const auto g = r.readXyz(*gravity, childPath(path, "gravity"), limits::kGravity)) out.gravity = *g;
+        if (const auto g = r.readXyz(*gravity, childPath(path, "gravity"), findSetting("gravity")->range)) out.gravity = *g;
 
     if (const Json* timeScale = Reader::find(s, "timeScale")) {
         const std::string p = childPath(path, "timeScale");
@@ -98,10 +98,13 @@ void readSettings(Reader& r, const Json& s, WorldSettings& out, ThesisDefaults& 
             r.checkKeys(*resolution, p,
                         {"penMaxIterations", "velMaxIterations", "minVelocityForRestitution",
                          "angularMovementLimitFactor", "persistentContactDistanceThreshold", "coefInterpAlpha"});
-            r.optionalInt(*resolution, p, "velMaxIterations", limits::kMinVelocityIterations,
-                          limits::kMaxVelocityIterations, out.solver.velocityIterations);
-            r.optionalInt(*resolution, p, "penMaxIterations", limits::kMinPositionIterations,
-                          limits::kMaxPositionIterations, out.solver.positionIterations);
+            // The v1 ranges of what they become, so an imported scene saves and reloads.
+            const NumberRange& velocity = findSetting("solver.velocityIterations")->range;
+            const NumberRange& position = findSetting("solver.positionIterations")->range;
+            r.optionalInt(*resolution, p, "velMaxIterations", static_cast<int>(velocity.min),
+                          static_cast<int>(velocity.max), out.solver.velocityIterations);
+            r.optionalInt(*resolution, p, "penMaxIterations", static_cast<int>(position.min),
+                          static_cast<int>(position.max), out.solver.positionIterations);
         }
     }
 
