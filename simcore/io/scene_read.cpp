@@ -1,0 +1,502 @@
+// Reading scene text into a Scene: format v1, strictly, with a diagnostic per problem (the thesis
+// app's format is thesis_import.cpp).
+//
+// What a file may hold - every settings key and body, shape and joint property with its accepted
+// range - is simcore/settings_schema.h; the settings are read and written by loops over its table.
+// The rules beyond single values (each violation is an error at the value's JSON pointer; all are
+// collected, up to io_detail::kMaxDiagnostics):
+//  - required: "format" ("interplay.scene"), "version" (1; newer versions are refused), "bodies",
+//    each body's "shape", its "type" and the dimensions that type needs. Mass and density are
+//    exclusive; rollingResistance is written only when set.
+//  - orientation [w, x, y, z]: finite and not (near) zero length; a quaternion more than 1e-3
+//    from unit length is normalised with a warning (smaller deviations silently).
+//  - convex hulls: ConvexHull::build must succeed.
+//  - what a dynamic body's values come to together (both formats): the mass a density gives
+//    (density x volume) within the mass range; the smallest principal moment of inertia at least
+//    1e-30 kg m^2 (its inverse must stay inside float range).
+//  - size (json_reader.h, checked while parsing, so memory stays bounded).
+//  - unknown keys are warnings: the scene loads, the key is reported and dropped.
+//  - static and kinematic bodies may carry mass or density: the value is validated and kept (so
+//    switching such a body to dynamic in the editor, or saving it, does not lose it), but the
+//    world ignores it. No warning, since nothing is lost.
+//  - a body without a name is called "body <index>".
+//  - joints: "type", "bodyA" (a body's name) and "anchor" are required; "bodyB" is a body's name,
+//    or null / absent for the world, and not bodyA; a name a joint uses must belong to exactly one
+//    body. Hinges and sliders require a non-zero "axis"; limits need lower <= upper; distance
+//    joints require "anchorB" at least 0.1 mm from anchor, and min <= max length once defaulted
+//    (see joint.h). Keys a joint type does not take are warnings, like unknown keys.
+//  - settings.preset: "fast", "balanced" or "accurate" (quality_preset.h), applied before every other
+//    settings key, which then override it. Saving writes it when the settings match a preset.
+
+#include "simcore/io/scene_io.h"
+
+#include "simcore/io/json_reader.h"
+#include "simcore/io/scene_v1.h"
+#include "simcore/world/quality_preset.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+
+namespace simcore {
+
+using io_detail::childPath;
+using io_detail::Json;
+using io_detail::kFormatTag;
+using io_detail::kFormatVersion;
+using io_detail::motorForceKey;
+using io_detail::Reader;
+using io_detail::splitKey;
+
+namespace {
+
+
+// The keys one object of the "settings" object takes: the top-level object's ("" section: preset,
+// gravity, ..., solver, ...) or a section's ("solver": velocityIterations, ...).
+std::vector<std::string_view> settingsKeysOf(std::string_view section) {
+    std::vector<std::string_view> keys;
+    if (section.empty()) keys.push_back("preset");
+    for (const SettingInfo& info : settingsSchema()) {
+        const auto [first, rest] = splitKey(info.key);
+        const std::string_view key = section.empty() ? first : (first == section && !rest.empty() ? rest : "");
+        if (!key.empty() && std::find(keys.begin(), keys.end(), key) == keys.end()) keys.push_back(key);
+    }
+    return keys;
+}
+
+// Reads one setting's value at `path` into `out`; reports what is wrong with it.
+void readSetting(Reader& r, const SettingInfo& info, const Json& value, const std::string& path, WorldSettings& out) {
+    switch (info.type) {
+        case SettingType::Bool:
+            if (const auto v = r.readBool(value, path)) info.set(out, *v);
+            break;
+        case SettingType::Int:
+            if (const auto v = r.readInt(value, path, static_cast<int>(info.range.min), static_cast<int>(info.range.max)))
+                info.set(out, *v);
+            break;
+        case SettingType::Float:
+            if (const auto v = r.readFloat(value, path, info.range)) info.set(out, *v);
+            break;
+        case SettingType::Vec3:
+            if (const auto v = r.readVec3(value, path, info.range)) info.set(out, *v);
+            break;
+        case SettingType::Choice:
+            if (const auto text = r.readString(value, path)) {
+                const auto known = std::find(info.choices.begin(), info.choices.end(), *text);
+                if (known != info.choices.end()) {
+                    info.set(out, static_cast<int>(known - info.choices.begin()));
+                } else {
+                    std::string what(info.label);  // "unknown position correction 'x'"
+                    what[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(what[0])));
+                    r.error(path, "unknown " + what + " '" + *text + "' (expected " + info.choiceList() + ")");
+                }
+            }
+            break;
+    }
+}
+
+}  // namespace
+
+void io_detail::readSettings(Reader& r, const Json& s, const std::string& path, WorldSettings& out) {
+    if (!r.expectObject(s, path)) return;
+    r.checkKeys(s, path, settingsKeysOf(""));
+    // The preset first, so that the explicit keys read below override its values.
+    if (const Json* preset = Reader::find(s, "preset")) {
+        const std::string p = childPath(path, "preset");
+        if (const auto name = r.readString(*preset, p)) {
+            if (const auto parsed = parseQualityPreset(*name))
+                applyQualityPreset(out, *parsed);
+            else
+                r.error(p, "unknown quality preset '" + *name + "' (expected fast, balanced or accurate)");
+        }
+    }
+    // In schema order; a section ("solver") is checked once, when its first key comes up.
+    std::string_view section;
+    const Json* sectionObject = nullptr;
+    for (const SettingInfo& info : settingsSchema()) {
+        const auto [first, rest] = splitKey(info.key);
+        if (rest.empty()) {
+            if (const Json* value = Reader::find(s, first)) readSetting(r, info, *value, childPath(path, first), out);
+            continue;
+        }
+        const std::string sectionPath = childPath(path, first);
+        if (first != section) {
+            section = first;
+            sectionObject = Reader::find(s, first);
+            if (sectionObject && !r.expectObject(*sectionObject, sectionPath)) sectionObject = nullptr;
+            if (sectionObject) r.checkKeys(*sectionObject, sectionPath, settingsKeysOf(first));
+        }
+        if (!sectionObject) continue;
+        if (const Json* value = Reader::find(*sectionObject, rest))
+            readSetting(r, info, *value, childPath(sectionPath, rest), out);
+    }
+}
+
+namespace {
+
+std::optional<Shape> readShape(Reader& r, const Json& j, const std::string& path) {
+    if (!r.expectObject(j, path)) return std::nullopt;
+    const Json* typeValue = r.require(j, path, "type");
+    if (!typeValue) return std::nullopt;
+    const auto type = r.readString(*typeValue, childPath(path, "type"));
+    if (!type) return std::nullopt;
+
+    auto size = [&](std::string_view key) -> std::optional<float> {
+        const Json* v = r.require(j, path, key);
+        return v ? r.readFloat(*v, childPath(path, key), limits::kSize) : std::nullopt;
+    };
+
+    if (*type == "box") {
+        r.checkKeys(j, path, propertyKeys(PropertyOwner::Box), "for a box shape");
+        const Json* v = r.require(j, path, "halfExtents");
+        const auto halfExtents = v ? r.readVec3(*v, childPath(path, "halfExtents"), limits::kSize) : std::nullopt;
+        if (halfExtents) return Shape::box(*halfExtents);
+    } else if (*type == "sphere") {
+        r.checkKeys(j, path, propertyKeys(PropertyOwner::Sphere), "for a sphere shape");
+        if (const auto radius = size("radius")) return Shape::sphere(*radius);
+    } else if (*type == "capsule" || *type == "cylinder") {
+        const bool capsule = *type == "capsule";
+        r.checkKeys(j, path, propertyKeys(capsule ? PropertyOwner::Capsule : PropertyOwner::Cylinder),
+                    capsule ? "for a capsule shape" : "for a cylinder shape");
+        const auto radius = size("radius");
+        const auto halfHeight = size("halfHeight");
+        if (radius && halfHeight)
+            return capsule ? Shape::capsule(*radius, *halfHeight) : Shape::cylinder(*radius, *halfHeight);
+    } else if (*type == "convexHull") {
+        r.checkKeys(j, path, propertyKeys(PropertyOwner::ConvexHull), "for a convexHull shape");
+        const Json* points = r.require(j, path, "points");
+        const std::string p = childPath(path, "points");
+        if (!points || !r.expectArray(*points, p)) return std::nullopt;
+        if (points->size() > limits::kMaxHullPoints) {
+            r.error(p, "a convex hull may have at most " + std::to_string(limits::kMaxHullPoints) + " points, got " +
+                           std::to_string(points->size()));
+            return std::nullopt;
+        }
+        std::vector<Vec3> cloud;
+        bool ok = true;
+        for (std::size_t i = 0; i < points->size() && !r.full(); ++i) {
+            if (const auto point = r.readVec3((*points)[i], childPath(p, i), limits::kCoordinate))
+                cloud.push_back(*point);
+            else
+                ok = false;
+        }
+        if (ok) return io_detail::hullShape(r, cloud, p);
+    } else {
+        r.error(childPath(path, "type"),
+                "unknown shape type '" + *type + "' (expected box, sphere, capsule, cylinder or convexHull)");
+    }
+    return std::nullopt;
+}
+
+std::optional<Quat> readOrientation(Reader& r, const Json& v, const std::string& path) {
+    if (!v.is_array()) {
+        r.error(path, "expected an array of 4 numbers [w, x, y, z], got " + io_detail::typeName(v));
+        return std::nullopt;
+    }
+    if (v.size() != 4) {
+        r.error(path, "expected 4 numbers [w, x, y, z], got " + std::to_string(v.size()));
+        return std::nullopt;
+    }
+    float c[4] = {};
+    for (std::size_t i = 0; i < 4; ++i) {
+        const auto f = r.readFloat(v[i], childPath(path, i), limits::kQuaternionComponent);
+        if (!f) return std::nullopt;
+        c[i] = *f;
+    }
+    return io_detail::normalisedOrientation(r, Quat(c[0], c[1], c[2], c[3]), path);
+}
+
+std::optional<SceneBody> readBody(Reader& r, const Json& b, const std::string& path, std::size_t index) {
+    if (!r.expectObject(b, path)) return std::nullopt;
+    r.checkKeys(b, path, propertyKeys(PropertyOwner::Body));
+    const int errorsBefore = r.errorCount();
+    SceneBody out;
+    BodyCreationSettings& s = out.body;
+
+    s.name = "body " + std::to_string(index);
+    if (const Json* name = Reader::find(b, "name"))
+        if (auto text = r.readString(*name, childPath(path, "name"))) s.name = std::move(*text);
+
+    if (const Json* motion = Reader::find(b, "motion")) {
+        const std::string p = childPath(path, "motion");
+        if (const auto text = r.readString(*motion, p)) {
+            if (*text == "static") s.motion = MotionType::Static;
+            else if (*text == "dynamic") s.motion = MotionType::Dynamic;
+            else if (*text == "kinematic") s.motion = MotionType::Kinematic;
+            else r.error(p, "unknown motion '" + *text + "' (expected static, dynamic or kinematic)");
+        }
+    }
+
+    if (const Json* shape = r.require(b, path, "shape"))
+        if (auto parsed = readShape(r, *shape, childPath(path, "shape"))) s.shape = std::move(*parsed);
+
+    r.optionalVec3(b, path, "position", limits::kCoordinate, s.position);
+    if (const Json* orientation = Reader::find(b, "orientation"))
+        if (const auto q = readOrientation(r, *orientation, childPath(path, "orientation"))) s.orientation = *q;
+    r.optionalVec3(b, path, "linearVelocity", limits::kLinearSpeed, s.linearVelocity);
+    r.optionalVec3(b, path, "angularVelocity", limits::kAngularSpeed, s.angularVelocity);
+
+    const Json* mass = Reader::find(b, "mass");
+    const Json* density = Reader::find(b, "density");
+    if (mass && density) {
+        r.error(childPath(path, "density"), "give either mass or density, not both");
+    } else if (mass) {
+        if (const auto m = r.readFloat(*mass, childPath(path, "mass"), limits::kMass)) s.mass = *m;
+    } else if (density) {
+        if (const auto d = r.readFloat(*density, childPath(path, "density"), limits::kDensity)) s.density = *d;
+    }
+
+    r.optionalFloat(b, path, "friction", limits::kFriction, s.friction);
+    r.optionalFloat(b, path, "restitution", limits::kRestitution, s.restitution);
+    r.optionalFloat(b, path, "rollingResistance", limits::kRollingResistance, s.rollingResistance);
+    r.optionalBool(b, path, "ccd", s.ccd);
+    if (const Json* color = Reader::find(b, "color"))
+        if (const auto c = r.readVec3(*color, childPath(path, "color"), limits::kColor)) out.color = *c;
+
+    if (r.errorCount() > errorsBefore) return std::nullopt;
+    return out;
+}
+
+// Reads a required number into `target`; false (and reported) when missing or invalid.
+bool requiredFloat(Reader& r, const Json& object, const std::string& path, std::string_view key,
+                   const io_detail::Range& range, float& target) {
+    const Json* value = r.require(object, path, key);
+    return value && r.optionalFloat(object, path, key, range, target);
+}
+
+// Whose keys a joint of `type` takes in the property schema.
+PropertyOwner jointOwner(JointType type) {
+    switch (type) {
+        case JointType::Hinge: return PropertyOwner::Hinge;
+        case JointType::Slider: return PropertyOwner::Slider;
+        case JointType::Distance: return PropertyOwner::Distance;
+        case JointType::Ball:
+        case JointType::Fixed: break;
+    }
+    return PropertyOwner::Joint;
+}
+
+// Body names as the file gives them (index order, the loader's default for a nameless body), so
+// joints resolve against the file even when a body failed to load.
+std::vector<std::string> bodyNames(const Json& bodies) {
+    std::vector<std::string> names;
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+        const Json* name = bodies[i].is_object() ? Reader::find(bodies[i], "name") : nullptr;
+        names.push_back(name && name->is_string() ? name->get<std::string>() : "body " + std::to_string(i));
+    }
+    return names;
+}
+
+// The index of the one body called `name`, or an error at `path`.
+std::optional<std::size_t> findBody(Reader& r, const Json& value, const std::string& path,
+                                    const std::vector<std::string>& names) {
+    const auto name = r.readString(value, path);
+    if (!name) return std::nullopt;
+    const auto count = std::count(names.begin(), names.end(), *name);
+    if (count == 0) {
+        r.error(path, "no body named \"" + *name + "\"");
+        return std::nullopt;
+    }
+    if (count > 1) {
+        r.error(path, std::to_string(count) + " bodies are named \"" + *name + "\"; a joint needs a unique name");
+        return std::nullopt;
+    }
+    return static_cast<std::size_t>(std::find(names.begin(), names.end(), *name) - names.begin());
+}
+
+std::optional<SceneJoint> readJoint(Reader& r, const Json& j, const std::string& path, std::size_t index,
+                                    const std::vector<std::string>& names) {
+    if (!r.expectObject(j, path)) return std::nullopt;
+    const int errorsBefore = r.errorCount();
+    SceneJoint out;
+    JointCreationSettings& s = out.joint;
+
+    const Json* typeValue = r.require(j, path, "type");
+    const auto type = typeValue ? r.readString(*typeValue, childPath(path, "type")) : std::nullopt;
+    if (!type) return std::nullopt;
+    const JointType types[] = {JointType::Ball, JointType::Hinge, JointType::Slider, JointType::Fixed, JointType::Distance};
+    const auto known = std::find_if(std::begin(types), std::end(types), [&](JointType t) { return *type == jointTypeName(t); });
+    if (known == std::end(types)) {
+        r.error(childPath(path, "type"), "unknown joint type '" + *type + "' (expected ball, hinge, slider, fixed or distance)");
+        return std::nullopt;
+    }
+    s.type = *known;
+    const bool hingeOrSlider = s.type == JointType::Hinge || s.type == JointType::Slider;
+    const bool distance = s.type == JointType::Distance;
+
+    const PropertyOwner owner = jointOwner(s.type);
+    r.checkKeys(j, path, propertyKeys(owner), "for a " + *type + " joint");
+
+    s.name = "joint " + std::to_string(index);
+    if (const Json* name = Reader::find(j, "name"))
+        if (auto text = r.readString(*name, childPath(path, "name"))) s.name = std::move(*text);
+
+    if (const Json* bodyA = r.require(j, path, "bodyA"))
+        if (const auto a = findBody(r, *bodyA, childPath(path, "bodyA"), names)) out.bodyA = *a;
+    if (const Json* bodyB = Reader::find(j, "bodyB"); bodyB && !bodyB->is_null()) {
+        const std::string p = childPath(path, "bodyB");
+        if (const auto b = findBody(r, *bodyB, p, names)) {
+            out.bodyB = *b;
+            if (*b == out.bodyA) r.error(p, "bodyB names the same body as bodyA (leave it out to join bodyA to the world)");
+        }
+    }
+
+    if (const Json* anchor = r.require(j, path, "anchor"))
+        if (const auto v = r.readVec3(*anchor, childPath(path, "anchor"), limits::kCoordinate)) s.anchor = *v;
+    r.optionalBool(j, path, "collideConnected", s.collideConnected);
+
+    if (hingeOrSlider) {
+        const std::string p = childPath(path, "axis");
+        if (const Json* axis = r.require(j, path, "axis")) {
+            if (const auto v = r.readVec3(*axis, p, limits::kCoordinate)) {
+                if (glm::length(*v) > 1e-6f) s.axis = *v;
+                else r.error(p, "axis must not be zero");
+            }
+        }
+        if (const Json* value = Reader::find(j, "limits")) {
+            const std::string lp = childPath(path, "limits");
+            if (r.expectObject(*value, lp)) {
+                r.checkKeys(*value, lp, propertyKeys(owner, "limits"));
+                JointLimits l;
+                const bool lowerRead = requiredFloat(r, *value, lp, "lower", propertyRange(owner, "limits.lower"), l.lower);
+                if (requiredFloat(r, *value, lp, "upper", propertyRange(owner, "limits.upper"), l.upper) && lowerRead) {
+                    if (l.lower > l.upper)
+                        r.error(lp, "lower (" + io_detail::formatNumber(l.lower) + ") exceeds upper (" +
+                                        io_detail::formatNumber(l.upper) + ")");
+                    else
+                        s.limits = l;
+                }
+            }
+        }
+        if (const Json* value = Reader::find(j, "motor")) {
+            const std::string mp = childPath(path, "motor");
+            if (r.expectObject(*value, mp)) {
+                const char* forceKey = motorForceKey(s.type);
+                r.checkKeys(*value, mp, propertyKeys(owner, "motor"));
+                JointMotor m;
+                const bool speedRead = requiredFloat(r, *value, mp, "speed", propertyRange(owner, "motor.speed"), m.speed);
+                const NumberRange& forceRange = propertyRange(owner, std::string("motor.") + forceKey);
+                if (requiredFloat(r, *value, mp, forceKey, forceRange, m.maxForce) && speedRead) s.motor = m;
+            }
+        }
+    }
+
+    if (distance) {
+        const std::string p = childPath(path, "anchorB");
+        if (const Json* anchorB = r.require(j, path, "anchorB")) {
+            if (const auto v = r.readVec3(*anchorB, p, limits::kCoordinate)) {
+                s.anchorB = *v;
+                if (glm::length(s.anchorB - s.anchor) < 1e-4f) r.error(p, "anchorB must be at least 0.1 mm from anchor");
+            }
+        }
+        if (const Json* value = Reader::find(j, "spring")) {
+            const std::string sp = childPath(path, "spring");
+            if (r.expectObject(*value, sp)) {
+                r.checkKeys(*value, sp, propertyKeys(owner, "spring"));
+                JointSpring spring;
+                const bool hertzRead = requiredFloat(r, *value, sp, "hertz", limits::kSpringHertz, spring.hertz);
+                if (r.optionalFloat(*value, sp, "dampingRatio", limits::kDampingRatio, spring.dampingRatio) && hertzRead)
+                    s.spring = spring;
+            }
+        }
+        float length = 0.0f;
+        if (Reader::find(j, "minLength") && r.optionalFloat(j, path, "minLength", limits::kJointLength, length)) s.minLength = length;
+        if (Reader::find(j, "maxLength") && r.optionalFloat(j, path, "maxLength", limits::kJointLength, length)) s.maxLength = length;
+        if (r.errorCount() == errorsBefore) {
+            const DistanceLengths lengths = distanceLengths(s);
+            if (lengths.min > lengths.max)
+                r.error(childPath(path, s.minLength ? "minLength" : "maxLength"),
+                        "minLength (" + io_detail::formatNumber(lengths.min) + ") exceeds maxLength (" +
+                            io_detail::formatNumber(lengths.max) + "); unset, each is the rest length " +
+                            io_detail::formatNumber(lengths.rest));
+        }
+    }
+
+    if (r.errorCount() > errorsBefore) return std::nullopt;
+    return out;
+}
+
+std::optional<Scene> readV1(const Json& root, Reader& r) {
+    r.checkKeys(root, "", {"format", "version", "settings", "bodies", "joints"});
+
+    // A wrong or missing format tag means this is not a scene at all, and a newer version may give
+    // keys other meanings: reporting its contents key by key would only bury the real problem.
+    const Json* format = r.require(root, "", "format");
+    if (!format) return std::nullopt;
+    const auto tag = r.readString(*format, "/format");
+    if (!tag) return std::nullopt;
+    if (*tag != kFormatTag) {
+        r.error("/format", "format must be \"" + std::string(kFormatTag) + "\", got \"" + *tag + "\"");
+        return std::nullopt;
+    }
+    if (const Json* version = r.require(root, "", "version")) {
+        if (!version->is_number()) {
+            r.error("/version", "expected an integer, got " + io_detail::typeName(*version));
+        } else if (const double v = version->get<double>(); v != std::floor(v)) {
+            r.error("/version", "expected an integer, got " + io_detail::formatNumber(v));
+        } else {
+            if (v > kFormatVersion) {
+                r.error("/version", "version " + io_detail::formatNumber(v) + " is newer than this program supports (" +
+                                        std::to_string(kFormatVersion) + ")");
+                return std::nullopt;
+            }
+            if (v != kFormatVersion)
+                r.error("/version", "version " + io_detail::formatNumber(v) + " is not a valid version (this program reads version " +
+                                        std::to_string(kFormatVersion) + ")");
+        }
+    }
+
+    Scene scene;
+    if (const Json* settings = Reader::find(root, "settings")) readSettings(r, *settings, "/settings", scene.settings);
+
+    std::vector<std::string> names;
+    if (const Json* bodies = r.require(root, "", "bodies"); bodies && r.expectArray(*bodies, "/bodies")) {
+        scene.bodies.reserve(bodies->size());
+        for (std::size_t i = 0; i < bodies->size() && !r.full(); ++i) {
+            if (auto body = readBody(r, (*bodies)[i], childPath("/bodies", i), i)) scene.bodies.push_back(std::move(*body));
+        }
+        names = bodyNames(*bodies);
+    }
+
+    if (const Json* joints = Reader::find(root, "joints"); joints && r.expectArray(*joints, "/joints")) {
+        scene.joints.reserve(joints->size());
+        for (std::size_t i = 0; i < joints->size() && !r.full(); ++i) {
+            if (auto joint = readJoint(r, (*joints)[i], childPath("/joints", i), i, names))
+                scene.joints.push_back(std::move(*joint));
+        }
+    }
+
+    if (r.errorCount() > 0) return std::nullopt;
+    return scene;
+}
+
+}  // namespace
+
+SceneLoadResult parseScene(std::string_view text, std::string_view fileName) {
+    SceneLoadResult result;
+    const std::string file(fileName);
+    std::optional<Json> root = io_detail::parseJson(text, file, result.diagnostics);
+    if (!root) return result;
+
+    Reader reader(file, result.diagnostics);
+    std::optional<Scene> scene;
+    std::string bodiesPath = "/bodies";
+    if (!root->is_object()) {
+        reader.error("", "expected a JSON object at the top level, got " + io_detail::typeName(*root));
+    } else if (!Reader::find(*root, "format") && Reader::find(*root, "objects")) {
+        // The thesis app's files have no format tag; their "objects" list identifies them.
+        scene = io_detail::importThesisScene(*root, reader);
+        bodiesPath = "/objects";
+    } else {
+        scene = readV1(*root, reader);
+    }
+    // Limits on what the values of a body come to together (mass from density, inertia), which
+    // no single value shows: the same for both formats.
+    for (std::size_t i = 0; scene && i < scene->bodies.size() && !reader.full(); ++i)
+        io_detail::checkMassProperties(reader, scene->bodies[i].body, childPath(bodiesPath, i));
+    reader.finish();
+    if (reader.errorCount() == 0 && scene) result.scene = std::move(scene);
+    return result;
+}
+
+}  // namespace simcore
