@@ -1,16 +1,19 @@
+// Over 800 lines because the random operations and the invariants checked after each are one
+// state machine over one document, controller and random stream; split, each half would need
+// the other's state in view to be read.
 // The editor's soak: a random mixed scene (every shape and joint type) plays for many steps while
 // random edits go through the editor's own Add, Duplicate and Delete actions (SceneActions) and the
 // document's undo commands (random bodies, property changes, drags merged into one entry, settings
 // and slider runs, reorder, Apply Simulated Pose, joints added, changed and deleted), with random
-// undo and redo runs, throws and grabs in the running world, and saves. The document and the controller are wired as the window wires them. After every
-// operation the document and the simulation must hold together: every index and id they expose is
+// undo and redo runs, throws and grabs in the running world, and saves. The document and the
+// controller are wired as the window wires them. After every operation the document and the simulation must hold together: every index and id they expose is
 // valid, no value is non-finite, the scene saves and loads back to the same bytes, the simulation
 // plays what the document holds, and every history position gives back exactly the scene it had.
 // At the end, undoing everything returns the first scene and redoing everything the last.
 //
 // Each run is fixed by a seed (the default, and seeds that once failed; INTERPLAY_SOAK_SEED=N runs
-// that one instead) and a number of operations (INTERPLAY_SOAK_OPERATIONS=N). A failure names the seed, the operation and the last few
-// operations before it, and saves the document's scene for a replay.
+// that one instead) and a number of operations (INTERPLAY_SOAK_OPERATIONS=N). A failure names the
+// seed, the operation and the last few operations before it, and saves the scene for a replay.
 //
 // Also here: the two editor bugs the soak found (a rename that made the file unloadable, Apply
 // Simulated Pose copying a state the file cannot hold), and a scene file over the 64 MiB limit

@@ -1,3 +1,6 @@
+// Over 800 lines because it is one fixture, a real window with a GL context under Xvfb, that
+// every case needs and that costs seconds to make; Qt Test runs one test class per program, and
+// the GUI suites take turns for the display, so a second program would add its start-up to CI.
 // The whole editor window, with real OpenGL under Xvfb: title and modified marker, the
 // unsaved-changes prompt (answered by a test hook, never a modal dialog), open/save/revert through
 // the window, recent files, autosave and recovery, a file changed by another program, a failing
@@ -24,6 +27,7 @@
 #include "simcore/io/scene_io.h"
 #include "simcore/settings_schema.h"
 #include "simcore/world/world.h"
+#include "support/fault_injection.h"
 
 #include <QAction>
 #include <QApplication>
@@ -567,15 +571,14 @@ void TestMainWindow::playStepResetLeaveTheAuthoredSceneIntact() {
 // The last line of defence. No valid scene takes the engine to a non-finite state any more (the
 // joint solver drops an overflowing result and every velocity is bounded: test_joints, test_limits
 // and the soak check that), so the fault is injected: a NaN written into the live world's storage,
-// as a future engine bug would leave it. The window must stop playing, say which body went wrong,
-// and leave the document as it was; Reset gives a clean world back.
+// as a future engine bug would leave it (support/fault_injection.h). The window must stop playing,
+// say which body went wrong, and leave the document as it was; Reset gives a clean world back.
 void TestMainWindow::nonFiniteStateStopsPlaybackWithAMessage() {
     interplay::SimulationController* simulation = m_window->simulation();
     const std::string authored = sceneText(m_window->document()->scene());
     m_window->action("step")->trigger();
     const simcore::BodyId box = simulation->bodyIds()[1];
-    auto& storage = const_cast<simcore::BodyStorage&>(simulation->world()->bodies());
-    storage.linearVelocity[static_cast<std::size_t>(storage.denseIndex(box))].x = std::numeric_limits<float>::quiet_NaN();
+    simcore::WorldFaultInjection::poisonLinearVelocity(const_cast<simcore::World&>(*simulation->world()), box);
 
     m_window->action("play")->trigger();
     QTRY_VERIFY_WITH_TIMEOUT(!simulation->isPlaying(), 5000);

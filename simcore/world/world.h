@@ -183,14 +183,11 @@ public:
     std::size_t contactCount() const { return contactManager_.contacts().size(); }
     ContactInfo contact(std::size_t index) const;
 
-    // Direct read access to the arrays, for renderers and reports that visit every body.
-    const BodyStorage& bodies() const { return bodies_; }
-    // Persistent contacts (touching or speculative), for debug drawing and tests.
-    const std::vector<Contact>& contacts() const { return contactManager_.contacts(); }
-    // Direct read access to the joints, for debug drawing and reports.
-    const JointStorage& joints() const { return joints_; }
-
 private:
+    // The one way past the public API: tests inject faults (a NaN, as an engine bug would leave
+    // one) that no setter accepts. Defined only in tests.
+    friend struct WorldFaultInjection;
+
     // What the awake bodies are doing, gathered once per step to decide which effects run.
     struct Activity {
         bool anyAwakeDynamic = false;
