@@ -119,6 +119,11 @@ SettingValue getEffect(const WorldSettings& s) { return s.effects[E]; }
 template <Effect E>
 void setEffect(WorldSettings& s, const SettingValue& value) { s.effects[E] = std::get<bool>(value); }
 
+constexpr std::string_view kIntegratorLabels[] = {"Semi-implicit Euler", "Explicit Euler", "Velocity Verlet"};
+static_assert(std::size(kIntegratorLabels) == kIntegratorNames.size());
+constexpr std::string_view kPositionCorrectionLabels[] = {"Soft step", "Baumgarte"};
+static_assert(std::size(kPositionCorrectionLabels) == kPositionCorrectionNames.size());
+
 constexpr NumberRange kNone{0.0, 0.0};
 constexpr NumberRange kDampingRate{0.0, 1e3, false, "1/s"};
 constexpr NumberRange kStiffness{0.0, 1e4, true, "Hz"};
@@ -142,7 +147,8 @@ constexpr SettingInfo kSettings[] = {
     {"substeps", T::Int, G::World, {1, 64}, {}, "Substeps",
      "equal parts a step is split into; more is stiffer and more accurate", SIMCORE_MEMBER(&W::substeps)},
     {"integrator", T::Choice, G::Solver, kNone, kIntegratorNames, "Integrator",
-     "which velocity moves positions in a substep (end, start or mean)", SIMCORE_MEMBER(&W::integrator)},
+     "which velocity moves positions in a substep (end, start or mean)", SIMCORE_MEMBER(&W::integrator),
+     kIntegratorLabels},
     {"solver.velocityIterations", T::Int, G::Solver, {1, 1000}, {}, "Velocity iterations",
      "sequential-impulse passes per substep", SIMCORE_MEMBER(&W::solver, &SolverSettings::velocityIterations)},
     {"solver.positionIterations", T::Int, G::Solver, {0, 1000}, {}, "Position iterations",
@@ -150,7 +156,7 @@ constexpr SettingInfo kSettings[] = {
      SIMCORE_MEMBER(&W::solver, &SolverSettings::positionIterations)},
     {"solver.positionCorrection", T::Choice, G::Solver, kNone, kPositionCorrectionNames, "Position correction",
      "how overlap is removed: soft contacts or Baumgarte bias",
-     SIMCORE_MEMBER(&W::solver, &SolverSettings::positionCorrection)},
+     SIMCORE_MEMBER(&W::solver, &SolverSettings::positionCorrection), kPositionCorrectionLabels},
     {"solver.contactHertz", T::Float, G::Solver, kStiffness, {}, "Contact stiffness",
      "soft-contact spring frequency, capped at a quarter of the substep rate",
      SIMCORE_MEMBER(&W::solver, &SolverSettings::contactHertz)},

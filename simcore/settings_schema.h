@@ -83,6 +83,7 @@ struct SettingInfo {
     std::string_view doc;    // one line: what it does
     SettingValue (*get)(const WorldSettings&);
     void (*set)(WorldSettings&, const SettingValue&);  // the value must have the setting's type
+    std::span<const std::string_view> choiceLabels = {};  // Choice: what the panel shows, as `choices`
 
     // A Choice's names as a sentence lists them: "softStep or baumgarte".
     std::string choiceList() const;

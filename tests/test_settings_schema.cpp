@@ -150,6 +150,7 @@ void TestSettingsSchema::panelRefusesUnknownChoices() {
     for (const simcore::SettingInfo& info : simcore::settingsSchema()) {
         if (info.type != simcore::SettingType::Choice) continue;
         const QString key = QString::fromLatin1(info.key.data(), static_cast<qsizetype>(info.key.size()));
+        QCOMPARE(info.choiceLabels.size(), info.choices.size());  // the panel shows a label per choice
         QVERIFY(!model.setValue(key, -1));
         QVERIFY(!model.setValue(key, static_cast<int>(info.choices.size())));
         refusals += 2;

@@ -131,7 +131,7 @@ QVariant SimulationSettingsModel::data(const QModelIndex& index, int role) const
     case ValueRole: return toVariant(info.get(settings()));
     case ChoicesRole: {
         QStringList names;
-        for (std::string_view name : info.choices) names << toQString(name);
+        for (std::string_view label : info.choiceLabels) names << toQString(label);
         return names;
     }
     }

@@ -39,7 +39,7 @@ public:
         MaximumRole,
         RangeRole,                   // "(0, 10000] Hz", as the docs write it; empty for bool and choice
         ValueRole,                   // bool, int, double, a list of 3 doubles, or a choice's index
-        ChoicesRole,                 // a choice's names, as files write them
+        ChoicesRole,                 // a choice's labels, in the order of the names files write
     };
     Q_ENUM(Role)
 
