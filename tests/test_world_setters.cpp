@@ -205,6 +205,25 @@ const std::vector<PropertyCase>& propertyCases() {
          }},
         {"lengths", [](Authoring& a) { a.joints[Rope].settings.minLength = 0.9f; a.joints[Rope].settings.maxLength = 1.1f; },
          [](Built& b) { b.world->setJointLengths(b.joints[Rope], 0.9f, 1.1f); }},
+        // A frame is given in world coordinates at the bodies' current poses: right after the
+        // build those are the authored ones, so the setter takes the authored values.
+        {"hinge anchor", [](Authoring& a) { a.joints[Hinge].settings.anchor = Vec3(-3.0f, 3.8f, 0.0f); },
+         [](Built& b) {
+             b.world->setJointFrame(b.joints[Hinge], Vec3(-3.0f, 3.8f, 0.0f), Vec3(0.0f, 0.0f, 1.0f), Vec3(0.0f));
+         }},
+        {"hinge axis", [](Authoring& a) { a.joints[Hinge].settings.axis = Vec3(0.3f, 0.0f, 1.0f); },
+         [](Built& b) {
+             b.world->setJointFrame(b.joints[Hinge], Vec3(-3.0f, 4.0f, 0.0f), Vec3(0.3f, 0.0f, 1.0f), Vec3(0.0f));
+         }},
+        {"slider axis", [](Authoring& a) { a.joints[Slider].settings.axis = Vec3(1.0f, 0.2f, 0.0f); },
+         [](Built& b) {
+             b.world->setJointFrame(b.joints[Slider], Vec3(-6.0f, 1.0f, 0.0f), Vec3(1.0f, 0.2f, 0.0f), Vec3(0.0f));
+         }},
+        // The rope's second anchor 20 cm higher: its rest length becomes 1.2 m.
+        {"rope anchors", [](Authoring& a) { a.joints[Rope].settings.anchorB = Vec3(6.0f, 3.2f, 0.0f); },
+         [](Built& b) {
+             b.world->setJointFrame(b.joints[Rope], Vec3(6.0f, 2.0f, 0.0f), Vec3(0.0f), Vec3(6.0f, 3.2f, 0.0f));
+         }},
         {"collide connected on", [](Authoring& a) { a.joints[CapWeld].settings.collideConnected = true; },
          [](Built& b) { b.world->setJointCollideConnected(b.joints[CapWeld], true); }},
     };
@@ -271,6 +290,7 @@ private slots:
     void motorDrivesAtTheNewSpeed();
     void collideConnectedTogglesContacts();
     void springChangeMidRunKeepsTheRestLength();
+    void frameChangeMidRunKeepsTheRestRotation();
     void nameAndGettersReadBack();
     void badValuesAreRefusedAndChangeNothing_data();
     void badValuesAreRefusedAndChangeNothing();
@@ -503,6 +523,25 @@ void TestWorldSetters::springChangeMidRunKeepsTheRestLength() {
     QVERIFY(b.world->jointError(rope).position < 1e-3f);
 }
 
+void TestWorldSetters::frameChangeMidRunKeepsTheRestRotation() {
+    Built b = build(authoring());
+    settle(b, 30);  // the arm swings against its limits
+    const JointId hinge = b.joints[Hinge];
+    const BodyId arm = b.bodies[Arm];
+    // The pivot moves 20 cm down the arm, where the arm is now; the axis stays z.
+    const Vec3 pivot = b.world->position(arm) + b.world->orientation(arm) * Vec3(0.0f, 0.3f, 0.0f);
+    b.world->setJointFrame(hinge, pivot, Vec3(0.0f, 0.0f, 1.0f), Vec3(0.0f));
+    settle(b, 180);
+    // The arm now turns about the new pivot, and its limits (0.15 rad) still count from the
+    // rotation at creation (upright), not from where the arm was when the pivot moved.
+    QVERIFY2(b.world->jointError(hinge).position < 1e-3f, qPrintable(QString::number(b.world->jointError(hinge).position)));
+    const Quat q = b.world->orientation(arm);
+    const float angle = 2.0f * std::asin(std::min(1.0f, glm::length(Vec3(q.x, q.y, q.z))));
+    QVERIFY2(angle < 0.15f + 0.01f, qPrintable(QString("arm turned %1 rad").arg(angle)));
+    const Vec3 pivotNow = b.world->position(arm) + q * Vec3(0.0f, 0.3f, 0.0f);
+    QVERIFY2(glm::length(pivotNow - pivot) < 1e-3f, qPrintable(QString::number(glm::length(pivotNow - pivot))));
+}
+
 void TestWorldSetters::nameAndGettersReadBack() {
     Built b = build(authoring());
     const BodyId ball = b.bodies[Ball];
@@ -549,6 +588,9 @@ void TestWorldSetters::badValuesAreRefusedAndChangeNothing_data() {
     QTest::newRow("spring off, min above rest") << 17 << "minLength must not exceed maxLength";
     // Finite, but its moments on the 100 m ground overflow: refused rather than a NaN inverse.
     QTest::newRow("mass overflowing the inertia") << 18 << "non-finite inertia";
+    QTest::newRow("zero slider axis") << 19 << "axis";
+    QTest::newRow("rope anchors together") << 20 << "anchorB";
+    QTest::newRow("NaN hinge anchor") << 21 << "anchor";
 }
 
 void TestWorldSetters::badValuesAreRefusedAndChangeNothing() {
@@ -586,6 +628,9 @@ void TestWorldSetters::badValuesAreRefusedAndChangeNothing() {
         [&] { w.setJointLengths(joint[Slider], 0.5f, 1.0f); },
         [&] { w.setJointSpring(joint[Rope], std::nullopt); },
         [&] { w.setMass(id[Ground], 3e38f); },  // refused though static: it would be unusable once dynamic
+        [&] { w.setJointFrame(joint[Slider], Vec3(-6.0f, 1.0f, 0.0f), Vec3(0.0f), Vec3(0.0f)); },
+        [&] { w.setJointFrame(joint[Rope], Vec3(6.0f, 2.0f, 0.0f), Vec3(0.0f), Vec3(6.0f, 2.0f, 0.0f)); },
+        [&] { w.setJointFrame(joint[Hinge], Vec3(nan, 4.0f, 0.0f), Vec3(0.0f, 0.0f, 1.0f), Vec3(0.0f)); },
     };
     const std::string message = refusal(calls[which]);
     QVERIFY2(!message.empty(), "the bad value was accepted");
@@ -597,6 +642,8 @@ void TestWorldSetters::badValuesAreRefusedAndChangeNothing() {
     QCOMPARE(w.shape(id[Ball]).radius, a.bodies[Ball].shape.radius);
     QCOMPARE(*w.jointLimits(joint[Hinge]), *a.joints[Hinge].settings.limits);
     QCOMPARE(w.jointSpring(joint[Rope])->hertz, a.joints[Rope].settings.spring->hertz);
+    QCOMPARE(w.jointLocalAnchorA(joint[Hinge]), plain.world->jointLocalAnchorA(plain.joints[Hinge]));
+    QCOMPARE(w.jointLengths(joint[Rope]).rest, plain.world->jointLengths(plain.joints[Rope]).rest);
 }
 
 QTEST_GUILESS_MAIN(TestWorldSetters)

@@ -76,7 +76,7 @@ bool SimulationController::build(simcore::Scene scene, QString* error) {
 }
 
 void SimulationController::editedInPlace() {
-    // Adding, removing, reordering or re-creating bodies and joints, or moving bodies, leaves the
+    // Adding, removing or reordering bodies and joints, or moving bodies, leaves the
     // world as the edits made it: bodies and joints in another order, fat boxes of other sizes.
     // (Property setters do not: they leave what a build with the new value makes.) Once it has run
     // nothing is lost by keeping it; before, a fresh build makes the run the same as the saved
@@ -265,15 +265,13 @@ bool SimulationController::changeJoint(int index, const simcore::SceneJoint& joi
         case JointField::CollideConnected: world.setJointCollideConnected(id, j.collideConnected); break;
         case JointField::Anchor:
         case JointField::AnchorB:
-        case JointField::Axis:
-            // Moved anchors or a turned axis define another joint: it is made anew at the bodies'
-            // live poses, which become its rest pose. It joins the end of the world's joints, so a
-            // world that has not run is rebuilt to solve them in the scene's order.
-            world.destroyJoint(id);
-            m_jointIds[i] = {};
-            m_jointIds[i] = createLiveJoint(joint);
-            editedInPlace();
+        case JointField::Axis: {
+            // The authored frame rides on the bodies as they are now: anchor and axis on body A,
+            // a distance joint's second anchor on body B.
+            const simcore::Vec3 anchorB = joint.bodyB ? livePoint(*joint.bodyB, j.anchorB) : j.anchorB;
+            world.setJointFrame(id, livePoint(joint.bodyA, j.anchor), liveDirection(joint.bodyA, j.axis), anchorB);
             break;
+        }
         case JointField::Placement: break;  // handled above
         }
     } catch (const std::exception& e) {

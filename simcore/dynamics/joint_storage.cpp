@@ -71,20 +71,14 @@ JointId JointStorage::add(const JointCreationSettings& s, const BodyStorage& bod
     j.type = s.type;
     j.bodyA = s.bodyA;
     j.bodyB = s.bodyB;
+    place(j, s.anchor, s.axis, s.anchorB, bodies);
     const JointBodyPose a = poseOf(s.bodyA, bodies);
     const JointBodyPose b = poseOf(s.bodyB, bodies);
-    const Vec3 anchorB = s.type == JointType::Distance ? s.anchorB : s.anchor;
-    j.localAnchorA = glm::conjugate(a.orientation) * (s.anchor - a.centerOfMass);
-    j.localAnchorB = glm::conjugate(b.orientation) * (anchorB - b.centerOfMass);
-    const Vec3 axis = glm::normalize(s.axis);
-    j.localAxisA = glm::conjugate(a.orientation) * axis;
-    j.localAxisB = glm::conjugate(b.orientation) * axis;
     j.restRotation = glm::normalize(glm::conjugate(a.orientation) * b.orientation);
     j.limits = s.limits;
     j.motor = s.motor;
     j.spring = s.spring;
     const DistanceLengths lengths = distanceLengths(s);
-    j.restLength = lengths.rest;
     j.minLength = lengths.min;
     j.maxLength = lengths.max;
     j.minLengthSetting = s.minLength;
@@ -108,6 +102,19 @@ void JointStorage::remove(JointId id) {
     joints.pop_back();
     names.pop_back();
     slots_.removeAt(i);
+}
+
+void JointStorage::place(Joint& j, const Vec3& anchor, const Vec3& axis, const Vec3& anchorB,
+                         const BodyStorage& bodies) const {
+    const JointBodyPose a = poseOf(j.bodyA, bodies);
+    const JointBodyPose b = poseOf(j.bodyB, bodies);
+    const Vec3 anchorOnB = j.type == JointType::Distance ? anchorB : anchor;
+    j.localAnchorA = glm::conjugate(a.orientation) * (anchor - a.centerOfMass);
+    j.localAnchorB = glm::conjugate(b.orientation) * (anchorOnB - b.centerOfMass);
+    const Vec3 unitAxis = glm::normalize(axis);
+    j.localAxisA = glm::conjugate(a.orientation) * unitAxis;
+    j.localAxisB = glm::conjugate(b.orientation) * unitAxis;
+    j.restLength = glm::length(anchorB - anchor);
 }
 
 JointBodyPose JointStorage::poseOf(BodyId body, const BodyStorage& bodies) const {

@@ -81,6 +81,10 @@ public:
     // Appends a joint; the settings must already be validated (World::createJoint does it) and
     // the bodies live in `bodies`.
     JointId add(const JointCreationSettings& settings, const BodyStorage& bodies);
+    // Holds `joint` at these world points and axis (as creation reads them from its settings) at
+    // the bodies' current poses; its rest rotation is left as it was. A distance joint's rest
+    // length becomes the anchors' distance.
+    void place(Joint& joint, const Vec3& anchor, const Vec3& axis, const Vec3& anchorB, const BodyStorage& bodies) const;
     void remove(JointId id);
 
     int denseIndex(JointId id) const { return slots_.denseIndex(id); }  // -1 for a stale or invalid id

@@ -126,15 +126,18 @@ void validateJointLengths(JointType type, float restLength, bool hasSpring, std:
     }
 }
 
-void validateJoint(const JointCreationSettings& s) {
-    const bool hingeOrSlider = s.type == JointType::Hinge || s.type == JointType::Slider;
-    const bool distance = s.type == JointType::Distance;
-    require(isFinite(s.anchor), "anchor must be finite");
-    if (distance) {
-        require(isFinite(s.anchorB), "anchorB must be finite");
-        require(glm::length(s.anchorB - s.anchor) >= 1e-4f, "anchorB must be at least 0.1 mm from anchor");
+void validateJointFrame(JointType type, const Vec3& anchor, const Vec3& axis, const Vec3& anchorB) {
+    require(isFinite(anchor), "anchor must be finite");
+    if (type == JointType::Distance) {
+        require(isFinite(anchorB), "anchorB must be finite");
+        require(glm::length(anchorB - anchor) >= 1e-4f, "anchorB must be at least 0.1 mm from anchor");
     }
-    if (hingeOrSlider) require(isFinite(s.axis) && glm::length(s.axis) > 1e-6f, "axis must be a finite, non-zero vector");
+    if (type == JointType::Hinge || type == JointType::Slider)
+        require(isFinite(axis) && glm::length(axis) > 1e-6f, "axis must be a finite, non-zero vector");
+}
+
+void validateJoint(const JointCreationSettings& s) {
+    validateJointFrame(s.type, s.anchor, s.axis, s.anchorB);
     validateJointLimits(s.type, s.limits);
     validateJointMotor(s.type, s.motor);
     validateJointSpring(s.type, s.spring);

@@ -37,6 +37,9 @@ void validateJointSpring(JointType type, const std::optional<JointSpring>& sprin
 // A distance joint's limits given its rest length (m) and whether it has a spring.
 void validateJointLengths(JointType type, float restLength, bool hasSpring, std::optional<float> minLength,
                           std::optional<float> maxLength);
+// Where a joint holds its bodies: a finite anchor; a distance joint's anchorB at least 0.1 mm from
+// it; a hinge's or slider's axis finite and not zero.
+void validateJointFrame(JointType type, const Vec3& anchor, const Vec3& axis, const Vec3& anchorB);
 // What can be checked without the bodies: numbers, and which options the type takes.
 void validateJoint(const JointCreationSettings& s);
 

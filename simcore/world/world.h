@@ -103,6 +103,11 @@ public:
     void setJointLengths(JointId id, std::optional<float> minLength, std::optional<float> maxLength);
     void setJointCollideConnected(JointId id, bool collideConnected);
     void setJointName(JointId id, const std::string& name);
+    // Where the joint holds its bodies, in world coordinates at their current poses, as
+    // JointCreationSettings reads them (anchor; a hinge's or slider's axis; a distance joint's
+    // anchorB, whose distance from anchor becomes the rest length). The rest rotation stays the
+    // one taken at creation, so hinge angles and slides still count from it.
+    void setJointFrame(JointId id, const Vec3& anchor, const Vec3& axis, const Vec3& anchorB);
 
     // How far the joint is from satisfied now: worst position (m) and angle (rad) error.
     JointError jointError(JointId id) const;

@@ -225,6 +225,17 @@ void World::setJointSpring(JointId id, const std::optional<JointSpring>& spring)
     wakeJointBodies(joint);
 }
 
+void World::setJointFrame(JointId id, const Vec3& anchor, const Vec3& axis, const Vec3& anchorB) {
+    Joint& joint = joints_.joints[indexOf(id)];
+    validateJointFrame(joint.type, anchor, axis, anchorB);
+    if (joint.type == JointType::Distance)
+        validateJointLengths(joint.type, glm::length(anchorB - anchor), joint.spring.has_value(), joint.minLengthSetting,
+                             joint.maxLengthSetting);
+    joints_.place(joint, anchor, axis, anchorB, bodies_);
+    applyDistanceLengths(joint);
+    wakeJointBodies(joint);
+}
+
 void World::setJointLengths(JointId id, std::optional<float> minLength, std::optional<float> maxLength) {
     Joint& joint = joints_.joints[indexOf(id)];
     validateJointLengths(joint.type, joint.restLength, joint.spring.has_value(), minLength, maxLength);
