@@ -638,8 +638,13 @@ void InspectorPanel::edit(Field field, const QString& what, const std::function<
         newName = QString::fromStdString(after.front().joint.name);
     }
     m_message->hide();
-    m_document->undoStack()->push(new ChangeObjects<Object>(m_document, commandText(field, what, label, newName), field,
-                                                            indices, std::move(after)));
+    const QString text = commandText(field, what, label, newName);
+    if constexpr (kBodies) {
+        // A move or turn takes the joints riding on the bodies along.
+        m_document->undoStack()->push(changeBodiesCommand(m_document, text, field, indices, std::move(after)));
+    } else {
+        m_document->undoStack()->push(new ChangeJoints(m_document, text, field, indices, std::move(after)));
+    }
 }
 
 void InspectorPanel::editBodies(BodyField field, const QString& what, const std::function<void(simcore::SceneBody&)>& change,

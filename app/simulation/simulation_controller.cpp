@@ -198,12 +198,12 @@ bool SimulationController::changeBody(int index, const simcore::SceneBody& body,
 simcore::Vec3 SimulationController::livePoint(std::size_t sceneBody, const simcore::Vec3& point) const {
     const simcore::BodyCreationSettings& authored = m_scene.bodies.at(sceneBody).body;
     const simcore::BodyId id = m_bodyIds.at(sceneBody);
-    return world()->position(id) + liveDirection(sceneBody, point - authored.position);
+    return carriedPoint({authored.position, authored.orientation}, {world()->position(id), world()->orientation(id)}, point);
 }
 
 simcore::Vec3 SimulationController::liveDirection(std::size_t sceneBody, const simcore::Vec3& direction) const {
-    const simcore::Quat& authored = m_scene.bodies.at(sceneBody).body.orientation;
-    return world()->orientation(m_bodyIds.at(sceneBody)) * (glm::inverse(authored) * direction);
+    return carriedDirection(m_scene.bodies.at(sceneBody).body.orientation, world()->orientation(m_bodyIds.at(sceneBody)),
+                            direction);
 }
 
 simcore::JointId SimulationController::createLiveJoint(const simcore::SceneJoint& joint) {
@@ -484,41 +484,26 @@ void SimulationController::follow(const SceneDocument* document, const std::func
 QUndoCommand* SimulationController::simulatedPoseCommand(SceneDocument* document, QString* error) const {
     const simcore::World* live = world();
     QList<int> indices;
+    std::vector<simcore::SceneBody> bodies;
     simcore::Scene applied = document->scene();
     for (int i = 0; live && i < document->bodyCount() && i < static_cast<int>(m_bodyIds.size()); ++i) {
         const simcore::BodyId id = m_bodyIds[static_cast<std::size_t>(i)];
         if (!live->contains(id)) continue;
-        simcore::BodyCreationSettings& body = applied.bodies[static_cast<std::size_t>(i)].body;
-        body.position = live->position(id);
-        body.orientation = live->orientation(id);
-        body.linearVelocity = live->linearVelocity(id);
-        body.angularVelocity = live->angularVelocity(id);
+        simcore::SceneBody& body = applied.bodies[static_cast<std::size_t>(i)];
+        body.body.position = live->position(id);
+        body.body.orientation = live->orientation(id);
+        body.body.linearVelocity = live->linearVelocity(id);
+        body.body.angularVelocity = live->angularVelocity(id);
         indices << i;
+        bodies.push_back(body);
     }
     if (indices.isEmpty()) {
         if (error) *error = tr("There is no simulated pose to apply.");
         return nullptr;
     }
-    // Joints move with the bodies the run moved; the others keep their anchors exactly (carried
-    // through an unchanged pose they would still be rounded, and the command would not be a no-op).
-    std::vector<bool> moved(applied.bodies.size(), false);
-    for (int i : indices) {
-        const simcore::BodyCreationSettings& before = document->body(i).body;
-        const simcore::BodyCreationSettings& after = applied.bodies[static_cast<std::size_t>(i)].body;
-        moved[static_cast<std::size_t>(i)] = before.position != after.position || before.orientation != after.orientation;
-    }
-    QList<int> jointIndices;
-    for (std::size_t j = 0; j < applied.joints.size(); ++j) {
-        simcore::SceneJoint& joint = applied.joints[j];
-        const bool movesA = moved[joint.bodyA];
-        const bool movesB = joint.bodyB && moved[*joint.bodyB] && joint.joint.type == simcore::JointType::Distance;
-        if (movesA) {
-            joint.joint.anchor = livePoint(joint.bodyA, joint.joint.anchor);
-            joint.joint.axis = liveDirection(joint.bodyA, joint.joint.axis);
-        }
-        if (movesB) joint.joint.anchorB = livePoint(*joint.bodyB, joint.joint.anchorB);  // only a distance joint has one
-        if (movesA || movesB) jointIndices << static_cast<int>(j);
-    }
+    // The joints riding on the bodies go with them, as the command will carry them.
+    for (auto& [index, joint] : jointsCarriedWith(document->scene(), indices, bodies))
+        applied.joints[static_cast<std::size_t>(index)] = std::move(joint);
     // The file format's own check, so the document never holds a scene it could not reopen.
     const simcore::SceneLoadResult reloaded = simcore::parseScene(simcore::serializeScene(applied), "simulated pose");
     if (!reloaded.ok()) {
@@ -528,19 +513,8 @@ QUndoCommand* SimulationController::simulatedPoseCommand(SceneDocument* document
                                 .arg(QString::fromStdString(refusal->path), QString::fromStdString(refusal->message));
         return nullptr;
     }
-    auto* command = new QUndoCommand(tr("Apply Simulated Pose"));
-    std::vector<simcore::SceneBody> bodies;
-    for (int i : indices) bodies.push_back(applied.bodies[static_cast<std::size_t>(i)]);
-    new ChangeBodies(document, command->text(), BodyField::Pose, indices, std::move(bodies), false, command);
-    if (!jointIndices.isEmpty()) {
-        std::vector<simcore::SceneJoint> joints;
-        for (int j : jointIndices) joints.push_back(applied.joints[static_cast<std::size_t>(j)]);
-        new ChangeJoints(document, command->text(), JointField::Placement, jointIndices, std::move(joints), false, command);
-    }
-    bool unchanged = true;
-    for (int c = 0; c < command->childCount(); ++c) unchanged = unchanged && command->child(c)->isObsolete();
-    command->setObsolete(unchanged);  // applied at the authored pose: no history entry
-    return command;
+    // Applied at the authored pose the command is obsolete: pushed, it leaves no history entry.
+    return new MoveBodies(document, tr("Apply Simulated Pose"), BodyField::Pose, indices, std::move(bodies));
 }
 
 }  // namespace interplay

@@ -137,7 +137,7 @@ void SelectionTool::dragBodies(const QPointF& position) {
     }
     // The first command of a drag starts a history entry; the rest merge into it.
     m_document->undoStack()->push(
-        new ChangeBodies(m_document, text, field, m_dragIndices, std::move(after), std::exchange(m_dragPushed, true)));
+        new MoveBodies(m_document, text, field, m_dragIndices, std::move(after), std::exchange(m_dragPushed, true)));
 }
 
 bool SelectionTool::mouseMove(QMouseEvent* event) {
