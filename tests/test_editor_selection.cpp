@@ -89,6 +89,8 @@ private slots:
     void init();
     void cleanup();
 
+    void dragWithRHeldTurnsTheBody_data();
+    void dragWithRHeldTurnsTheBody();
     void draggingAJointedBodyMovesItsAnchors();
     void inspectorMoveCarriesTheJoints();
     void distanceJointSecondAnchorRidesOnBodyB();
@@ -141,6 +143,55 @@ void TestEditorSelection::openScene(const char* name) {
     QString error;
     QVERIFY2(m_window->documentManager()->openFile(QString(INTERPLAY_SOURCE_DIR "/scenes/") + name, &error), qPrintable(error));
     m_window->viewport()->grabViewport();  // first frame: the camera frames the scene
+}
+
+void TestEditorSelection::dragWithRHeldTurnsTheBody_data() {
+    QTest::addColumn<bool>("holdR");
+    QTest::addColumn<Qt::KeyboardModifiers>("modifiers");
+    QTest::newRow("R held") << true << Qt::KeyboardModifiers{};
+    QTest::newRow("Alt") << false << Qt::KeyboardModifiers{Qt::AltModifier};
+}
+
+void TestEditorSelection::dragWithRHeldTurnsTheBody() {
+    QFETCH(bool, holdR);
+    QFETCH(Qt::KeyboardModifiers, modifiers);
+    openScene("ragdoll.json");
+    interplay::SceneDocument* document = m_window->document();
+    interplay::Viewport* viewport = m_window->viewport();
+    const int shin = bodyNamed(*document, "left shin");
+    const int knee = jointNamed(*document, "left knee");  // body A is the shin; its axis is x
+    QVERIFY(shin >= 0 && knee >= 0);
+    QCOMPARE(document->joint(knee).bodyA, std::size_t(shin));
+    const simcore::BodyCreationSettings start = document->body(shin).body;
+    const simcore::SceneJoint startKnee = document->joint(knee);
+    const simcore::Vec3 anchorInShin = inBodyFrame(*document, shin, startKnee.joint.anchor);
+    const simcore::Vec3 axisInShin = directionInBodyFrame(*document, shin, startKnee.joint.axis);
+
+    viewport->setFocus();
+    if (holdR) QTest::keyPress(viewport, Qt::Key_R);
+    const QPoint from = pixelOf(*viewport, start.position);
+    QTest::mousePress(viewport, Qt::LeftButton, modifiers, from);
+    for (int i = 1; i <= 10; ++i) QTest::mouseMove(viewport, from + QPoint(8 * i, 0));
+    QTest::mouseRelease(viewport, Qt::LeftButton, modifiers, from + QPoint(80, 0));
+    if (holdR) QTest::keyRelease(viewport, Qt::Key_R);
+
+    const simcore::BodyCreationSettings& turned = document->body(shin).body;
+    QCOMPARE(turned.position, start.position);  // turned in place, not moved
+    // 80 px at half a degree per pixel: a 40 degree turn about the vertical.
+    const simcore::Quat turn = turned.orientation * glm::inverse(start.orientation);
+    QVERIFY2(std::abs(glm::degrees(glm::angle(turn)) - 40.0f) < 0.5f, qPrintable(QString::number(glm::degrees(glm::angle(turn)))));
+    verifyClose(glm::abs(glm::axis(turn)), {0.0f, 1.0f, 0.0f}, 1e-4f, "turn axis");
+    // The knee turns with the shin: the same point and axis of it, so the axis is no longer x.
+    verifyClose(inBodyFrame(*document, shin, document->joint(knee).joint.anchor), anchorInShin, 1e-5f, "knee anchor in the shin");
+    verifyClose(directionInBodyFrame(*document, shin, document->joint(knee).joint.axis), axisInShin, 1e-5f, "knee axis in the shin");
+    QVERIFY(std::abs(document->joint(knee).joint.axis.x) < 0.9f);
+
+    QUndoStack* stack = document->undoStack();
+    QCOMPARE(stack->count(), 1);
+    QVERIFY(stack->text(0).startsWith("Rotate"));
+    stack->undo();
+    QCOMPARE(document->body(shin).body.orientation, start.orientation);
+    QVERIFY(interplay::sameSceneJoint(document->joint(knee), startKnee));
 }
 
 void TestEditorSelection::draggingAJointedBodyMovesItsAnchors() {
