@@ -64,6 +64,7 @@ bool SimulationController::build(simcore::Scene scene, QString* error) {
     m_built = std::move(built);
     m_bodyIds = m_built->bodyIds;
     m_jointIds = m_built->jointIds;
+    m_removedBodies.clear();
     m_colors.clear();
     m_colors.reserve(m_scene.bodies.size());
     for (const simcore::SceneBody& body : m_scene.bodies) m_colors.push_back(body.color);
@@ -95,10 +96,19 @@ void SimulationController::rebuildIfEditedBeforeRun() {
 bool SimulationController::insertBody(int index, const simcore::SceneBody& body, QString* error) {
     if (!m_built) return false;
     insertSceneBody(m_scene, index, body);
+    simcore::BodyCreationSettings settings = body.body;
+    // The most recent removal of this very body from this place: it returns as the run left it.
+    const auto removed = std::find_if(m_removedBodies.rbegin(), m_removedBodies.rend(), [&](const RemovedBody& r) {
+        return r.index == index && sameSceneBody(r.authored, body);
+    });
+    if (removed != m_removedBodies.rend()) {
+        settings = removed->live;
+        m_removedBodies.erase(std::next(removed).base());
+    }
     simcore::BodyId id;  // stays invalid if the engine refuses the body, so indices stay aligned
     bool created = true;
     try {
-        id = m_built->world.createBody(body.body);
+        id = m_built->world.createBody(settings);
     } catch (const std::exception& e) {
         if (error) *error = QString::fromStdString(e.what());
         created = false;
@@ -113,7 +123,17 @@ bool SimulationController::insertBody(int index, const simcore::SceneBody& body,
 void SimulationController::removeBody(int index) {
     if (!m_built) return;
     const simcore::BodyId id = m_bodyIds.at(static_cast<std::size_t>(index));
-    if (m_built->world.contains(id)) m_built->world.destroyBody(id);
+    simcore::World& world = m_built->world;
+    if (world.contains(id)) {
+        const simcore::SceneBody& authored = m_scene.bodies.at(static_cast<std::size_t>(index));
+        simcore::BodyCreationSettings live = authored.body;
+        live.position = world.position(id);
+        live.orientation = world.orientation(id);
+        live.linearVelocity = world.linearVelocity(id);
+        live.angularVelocity = world.angularVelocity(id);
+        m_removedBodies.push_back({index, authored, std::move(live)});
+        world.destroyBody(id);
+    }
     if (m_grab && m_grab->body == id) m_grab.reset();
     m_bodyIds.erase(m_bodyIds.begin() + index);
     m_colors.erase(m_colors.begin() + index);
