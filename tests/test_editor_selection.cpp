@@ -95,6 +95,7 @@ private slots:
     void inspectorMoveCarriesTheJoints();
     void distanceJointSecondAnchorRidesOnBodyB();
     void undoneDeleteDuringARunReturnsTheLiveState();
+    void mixedSelectionShowsMixedChoices();
 
 private:
     void openScene(const char* name);
@@ -350,6 +351,46 @@ void TestEditorSelection::undoneDeleteDuringARunReturnsTheLiveState() {
     // The engine normalises a body's orientation when it makes it: equal to a few ulps.
     QVERIFY2(std::abs(glm::dot(restoredOrientation, liveOrientation)) > 1.0f - 1e-6f, "the orientation the run had");
     QCOMPARE(restoredVelocity, liveVelocity);
+}
+
+void TestEditorSelection::mixedSelectionShowsMixedChoices() {
+    openScene("mixed1k.json");
+    interplay::SceneDocument* document = m_window->document();
+    interplay::InspectorPanel* inspector = m_window->inspector();
+    auto* shape = inspector->findChild<QComboBox*>("shapeType");
+    auto* motion = inspector->findChild<QComboBox*>("motion");
+    auto* color = inspector->findChild<QPushButton*>("color");
+    QVERIFY(shape && motion && color);
+
+    QList<int> all;
+    for (int i = 0; i < document->bodyCount(); ++i) all << i;
+    document->setSelectedBodies(all);
+    QCOMPARE(shape->currentIndex(), -1);
+    QCOMPARE(shape->placeholderText(), QString("mixed"));
+    QCOMPARE(motion->currentIndex(), -1);
+    QCOMPARE(motion->placeholderText(), QString("mixed"));
+    QCOMPARE(color->text(), QString("mixed"));
+
+    // Bodies that agree show what they share.
+    const simcore::SceneBody& first = document->body(1);
+    QList<int> alike;
+    for (int i = 1; i < document->bodyCount() && alike.size() < 3; ++i) {
+        const simcore::SceneBody& b = document->body(i);
+        if (b.body.shape.type == first.body.shape.type && b.body.motion == first.body.motion && b.color == first.color) alike << i;
+    }
+    QVERIFY(alike.size() > 1);
+    document->setSelectedBodies(alike);
+    QCOMPARE(shape->currentIndex(), shape->findData(int(first.body.shape.type)));
+    QCOMPARE(motion->currentIndex(), motion->findData(int(first.body.motion)));
+    QVERIFY(color->text() != "mixed");
+
+    // Choosing in a mixed drop-down sets every selected body.
+    document->setSelectedBodies(all);
+    motion->setFocus();
+    QTest::keyClick(motion, Qt::Key_Down);  // from no choice to the first
+    const auto chosen = static_cast<simcore::MotionType>(motion->itemData(0).toInt());
+    QVERIFY(std::all_of(all.begin(), all.end(), [&](int i) { return document->body(i).body.motion == chosen; }));
+    QCOMPARE(motion->currentIndex(), 0);
 }
 
 QTEST_MAIN(TestEditorSelection)
