@@ -96,6 +96,7 @@ private slots:
     void distanceJointSecondAnchorRidesOnBodyB();
     void undoneDeleteDuringARunReturnsTheLiveState();
     void mixedSelectionShowsMixedChoices();
+    void sceneTreeShowsWholeNames();
 
 private:
     void openScene(const char* name);
@@ -391,6 +392,25 @@ void TestEditorSelection::mixedSelectionShowsMixedChoices() {
     const auto chosen = static_cast<simcore::MotionType>(motion->itemData(0).toInt());
     QVERIFY(std::all_of(all.begin(), all.end(), [&](int i) { return document->body(i).body.motion == chosen; }));
     QCOMPARE(motion->currentIndex(), 0);
+}
+
+void TestEditorSelection::sceneTreeShowsWholeNames() {
+    openScene("ragdoll.json");
+    QTreeView* tree = m_window->sceneTree();
+    interplay::SceneTreeModel* model = m_window->sceneTreeModel();
+    interplay::SceneDocument* document = m_window->document();
+    QTRY_VERIFY(tree->isVisible());
+    QCoreApplication::processEvents();
+    // QTreeView hides the view's public sizeHintForColumn: what the names need, with indentation.
+    const int needed = static_cast<QAbstractItemView*>(tree)->sizeHintForColumn(interplay::SceneTreeModel::NameColumn);
+    const int nameWidth = tree->header()->sectionSize(interplay::SceneTreeModel::NameColumn);
+    QVERIFY2(nameWidth >= needed, qPrintable(QString("Name column %1 px, its names need %2 px").arg(nameWidth).arg(needed)));
+    for (int i = 0; i < document->bodyCount(); ++i) {
+        const QModelIndex index = model->indexOfBody(i);
+        const int textWidth = tree->fontMetrics().horizontalAdvance(index.data().toString());
+        QVERIFY2(tree->visualRect(index).width() >= textWidth,
+                 qPrintable(QString("\"%1\" needs %2 px, has %3").arg(index.data().toString()).arg(textWidth).arg(tree->visualRect(index).width())));
+    }
 }
 
 QTEST_MAIN(TestEditorSelection)
