@@ -244,10 +244,11 @@ void MainWindow::createDocks() {
     m_sceneTree->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed |
                                  QAbstractItemView::SelectedClicked);
     m_sceneTree->setUniformRowHeights(true);
-    m_sceneTree->header()->setSectionResizeMode(SceneTreeModel::NameColumn, QHeaderView::Stretch);
+    // Names are what a user reads the tree for: their column fits them whole, and Details (the
+    // long column) takes what is left and is cut instead; a narrow dock scrolls sideways.
+    m_sceneTree->header()->setSectionResizeMode(SceneTreeModel::NameColumn, QHeaderView::ResizeToContents);
     m_sceneTree->header()->setSectionResizeMode(SceneTreeModel::TypeColumn, QHeaderView::ResizeToContents);
-    m_sceneTree->header()->setSectionResizeMode(SceneTreeModel::DetailsColumn, QHeaderView::ResizeToContents);
-    m_sceneTree->header()->setStretchLastSection(false);
+    m_sceneTree->header()->setSectionResizeMode(SceneTreeModel::DetailsColumn, QHeaderView::Stretch);
     m_sceneTree->expandAll();
     connect(m_sceneTreeModel, &QAbstractItemModel::modelReset, m_sceneTree, &QTreeView::expandAll);
     connect(m_sceneTree->selectionModel(), &QItemSelectionModel::selectionChanged, this, [this] {

@@ -5,7 +5,10 @@
 
 #include "simcore/io/scene.h"
 
+#include <QList>
+
 #include <algorithm>
+#include <utility>
 #include <vector>
 
 namespace interplay {
@@ -30,5 +33,16 @@ void insertSceneBody(simcore::Scene& scene, int index, simcore::SceneBody body);
 // The body must have no joints (take them first).
 simcore::SceneBody takeSceneBody(simcore::Scene& scene, int index);
 void moveSceneBody(simcore::Scene& scene, int from, int to);
+
+// A point (direction) fixed in a body that moves from pose `from` to pose `to`, where it is then.
+simcore::Vec3 carriedPoint(const simcore::Transform& from, const simcore::Transform& to, const simcore::Vec3& point);
+simcore::Vec3 carriedDirection(const simcore::Quat& from, const simcore::Quat& to, const simcore::Vec3& direction);
+
+// The joints of `scene` that ride on bodies moved or turned to new poses (`indices[i]` to
+// `after[i]`), re-expressed so that they hold the same points of them: anchor and axis move with
+// body A, a distance joint's second anchor with body B. A joint on bodies that keep their pose
+// keeps its anchors exactly. Returns (joint index, joint) pairs, ascending.
+std::vector<std::pair<int, simcore::SceneJoint>> jointsCarriedWith(const simcore::Scene& scene, const QList<int>& indices,
+                                                                   const std::vector<simcore::SceneBody>& after);
 
 }  // namespace interplay

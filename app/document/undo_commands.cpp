@@ -1,5 +1,7 @@
 #include "app/document/undo_commands.h"
 
+#include "app/document/scene_edits.h"
+
 #include <QCoreApplication>
 #include <QStringList>
 
@@ -174,6 +176,53 @@ void ChangeObjects<Object>::updateObsolete() {
 
 template class ChangeObjects<simcore::SceneBody>;
 template class ChangeObjects<simcore::SceneJoint>;
+
+// ---- MoveBodies ---------------------------------------------------------------------------------
+
+MoveBodies::MoveBodies(SceneDocument* document, const QString& text, BodyField field, QList<int> indices,
+                       std::vector<simcore::SceneBody> after, bool mergeable)
+    : QUndoCommand(text), m_field(field), m_indices(indices), m_mergeable(mergeable) {
+    Q_ASSERT(field == BodyField::Position || field == BodyField::Orientation || field == BodyField::Pose);
+    // Carried from where the bodies are now: a merged drag carries the joints step by step, as the
+    // bodies go.
+    std::vector<std::pair<int, simcore::SceneJoint>> carried = jointsCarriedWith(document->scene(), indices, after);
+    // Bodies before joints: undo runs the children in reverse, so the joints go back first.
+    m_bodies = new ChangeBodies(document, text, field, std::move(indices), std::move(after), mergeable, this);
+    if (!carried.empty()) {
+        std::vector<simcore::SceneJoint> joints;
+        for (auto& [index, joint] : carried) {
+            m_jointIndices << index;
+            joints.push_back(std::move(joint));
+        }
+        m_joints = new ChangeJoints(document, text, JointField::Placement, m_jointIndices, std::move(joints), mergeable, this);
+    }
+    updateObsolete();
+}
+
+bool MoveBodies::mergeWith(const QUndoCommand* other) {
+    const auto* next = static_cast<const MoveBodies*>(other);
+    // Checked here, so that the children below either both merge or neither does.
+    if (!next->m_mergeable || next->m_field != m_field || next->m_indices != m_indices || next->m_jointIndices != m_jointIndices)
+        return false;
+    m_bodies->mergeWith(next->m_bodies);
+    if (m_joints) m_joints->mergeWith(next->m_joints);
+    // Back where the drag began, the joints go back exactly: carried there and back step by step
+    // they would be rounded, and the document would differ from its history.
+    if (m_joints && m_bodies->isObsolete()) m_joints->undo();
+    updateObsolete();
+    return true;
+}
+
+void MoveBodies::updateObsolete() {
+    setObsolete(m_bodies->isObsolete());  // the joints only follow the bodies
+}
+
+QUndoCommand* changeBodiesCommand(SceneDocument* document, const QString& text, BodyField field, QList<int> indices,
+                                  std::vector<simcore::SceneBody> after, bool mergeable) {
+    if (field == BodyField::Position || field == BodyField::Orientation || field == BodyField::Pose)
+        return new MoveBodies(document, text, field, std::move(indices), std::move(after), mergeable);
+    return new ChangeBodies(document, text, field, std::move(indices), std::move(after), mergeable);
+}
 
 // ---- ChangeSettings -----------------------------------------------------------------------------
 

@@ -21,6 +21,7 @@ enum class CommandId : int {
     ChangeBodies = 1,
     ChangeSettings,
     ChangeJoints,
+    MoveBodies,
 };
 
 // "Box 3" for one body, "3 Bodies" for several: the object part of a command's name.
@@ -146,6 +147,33 @@ using ChangeBodies = ChangeObjects<simcore::SceneBody>;
 using ChangeJoints = ChangeObjects<simcore::SceneJoint>;
 extern template class ChangeObjects<simcore::SceneBody>;
 extern template class ChangeObjects<simcore::SceneJoint>;
+
+// Moves or turns bodies (a drag, the Inspector's position and rotation, Apply Simulated Pose) with
+// the joints that ride on them (jointsCarriedWith), as one command: a ChangeBodies of `field`
+// (Position, Orientation or Pose) and a ChangeJoints of their Placement. Merges like ChangeObjects,
+// so a drag is one history entry with its joints.
+class MoveBodies : public QUndoCommand {
+public:
+    MoveBodies(SceneDocument* document, const QString& text, BodyField field, QList<int> indices,
+               std::vector<simcore::SceneBody> after, bool mergeable = false);
+    int id() const override { return static_cast<int>(CommandId::MoveBodies); }
+    bool mergeWith(const QUndoCommand* other) override;
+
+private:
+    void updateObsolete();
+
+    BodyField m_field;
+    QList<int> m_indices;
+    QList<int> m_jointIndices;
+    bool m_mergeable;
+    ChangeBodies* m_bodies;             // child
+    ChangeJoints* m_joints = nullptr;   // child, when joints ride on the bodies
+};
+
+// The command for an edit of `field` of bodies: a MoveBodies for their pose (so joints follow),
+// else a ChangeBodies.
+QUndoCommand* changeBodiesCommand(SceneDocument* document, const QString& text, BodyField field, QList<int> indices,
+                                  std::vector<simcore::SceneBody> after, bool mergeable = false);
 
 // Replaces the world settings. Like ChangeObjects, a mergeable command continues the previous one
 // when it has the same `key` (the settings field a control edits, e.g. "gravity").

@@ -22,8 +22,10 @@
 
 #include <glm/gtc/quaternion.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <iterator>
 #include <type_traits>
 
 namespace interplay {
@@ -231,6 +233,7 @@ void InspectorPanel::createBodyRows() {
     // Shape.
     for (simcore::ShapeType type : kShapeTypes) m_shapeType->addItem(shapeDisplayName(type), static_cast<int>(type));
     m_shapeType->setObjectName(QStringLiteral("shapeType"));
+    m_shapeType->setPlaceholderText(tr("mixed"));  // shown while bodies of several shapes are selected
     m_bodyRows.addRow(tr("Shape"), m_shapeType, always);
     connect(m_shapeType, &QComboBox::activated, this, [this](int row) {
         const auto type = static_cast<simcore::ShapeType>(m_shapeType->itemData(row).toInt());
@@ -267,6 +270,7 @@ void InspectorPanel::createBodyRows() {
     // Motion and mass.
     for (simcore::MotionType motion : kMotionTypes) m_motion->addItem(motionLabel(motion), static_cast<int>(motion));
     m_motion->setObjectName(QStringLiteral("motion"));
+    m_motion->setPlaceholderText(tr("mixed"));
     m_bodyRows.addRow(tr("Motion"), m_motion, always);
     connect(m_motion, &QComboBox::activated, this, [this](int row) {
         const auto motion = static_cast<simcore::MotionType>(m_motion->itemData(row).toInt());
@@ -274,6 +278,7 @@ void InspectorPanel::createBodyRows() {
     });
     m_massMode->addItems({tr("Mass (kg)"), tr("Density (kg/m³)")});
     m_massMode->setObjectName(QStringLiteral("massMode"));
+    m_massMode->setPlaceholderText(tr("mixed"));
     m_bodyRows.addRow(tr("Given by"), m_massMode, isDynamic);
     connect(m_massMode, &QComboBox::activated, this, [this](int row) {
         const bool byDensity = row == 1;
@@ -638,8 +643,13 @@ void InspectorPanel::edit(Field field, const QString& what, const std::function<
         newName = QString::fromStdString(after.front().joint.name);
     }
     m_message->hide();
-    m_document->undoStack()->push(new ChangeObjects<Object>(m_document, commandText(field, what, label, newName), field,
-                                                            indices, std::move(after)));
+    const QString text = commandText(field, what, label, newName);
+    if constexpr (kBodies) {
+        // A move or turn takes the joints riding on the bodies along.
+        m_document->undoStack()->push(changeBodiesCommand(m_document, text, field, indices, std::move(after)));
+    } else {
+        m_document->undoStack()->push(new ChangeJoints(m_document, text, field, indices, std::move(after)));
+    }
 }
 
 void InspectorPanel::editBodies(BodyField field, const QString& what, const std::function<void(simcore::SceneBody&)>& change,
@@ -701,9 +711,14 @@ void InspectorPanel::refreshBodies() {
     const simcore::SceneBody& lead = *bodies.front();
     m_name->setEnabled(bodies.size() == 1);
     m_name->setText(bodies.size() == 1 ? m_document->bodyName(selection.first()) : QString());
-    m_shapeType->setCurrentIndex(m_shapeType->findData(static_cast<int>(lead.body.shape.type)));
-    m_motion->setCurrentIndex(m_motion->findData(static_cast<int>(lead.body.motion)));
-    m_massMode->setCurrentIndex(lead.body.mass ? 0 : 1);
+    // Values that differ across the selection show no choice, and the drop-down says "mixed".
+    const auto showChoice = [](QComboBox* box, std::optional<int> data) { box->setCurrentIndex(data ? box->findData(*data) : -1); };
+    showChoice(m_shapeType, sharedValue(bodies, [](const simcore::SceneBody& b) { return static_cast<int>(b.body.shape.type); }));
+    showChoice(m_motion, sharedValue(bodies, [](const simcore::SceneBody& b) { return static_cast<int>(b.body.motion); }));
+    std::vector<const simcore::SceneBody*> dynamicBodies;  // the bodies the mass row applies to
+    std::copy_if(bodies.begin(), bodies.end(), std::back_inserter(dynamicBodies), [](const auto* b) { return isDynamic(*b); });
+    const std::optional<bool> byMass = sharedValue(dynamicBodies, [](const simcore::SceneBody& b) { return b.body.mass.has_value(); });
+    m_massMode->setCurrentIndex(byMass ? (*byMass ? 0 : 1) : -1);
     // The field takes what a scene file accepts for what it holds (docs/scene-format.md).
     const simcore::NumberRange& massRange = range(PropertyOwner::Body, lead.body.mass ? "mass" : "density");
     numberField(QStringLiteral("mass"))->setRange(massRange.min, massRange.max);
@@ -712,13 +727,14 @@ void InspectorPanel::refreshBodies() {
                                 .arg(lead.body.shape.hull->sourcePoints().size())
                                 .arg(lead.body.shape.hull->faces().size()));
     }
-    if (lead.color) {
-        const QColor c = toQColor(*lead.color);
+    const auto color = sharedValue(bodies, [](const simcore::SceneBody& b) { return b.color; });
+    if (color && *color) {
+        const QColor c = toQColor(**color);
         m_color->setText(c.name());
         m_color->setStyleSheet(QStringLiteral("background-color: %1; color: %2;")
                                    .arg(c.name(), c.lightnessF() > 0.55 ? QStringLiteral("black") : QStringLiteral("white")));
     } else {
-        m_color->setText(tr("Automatic"));
+        m_color->setText(color ? tr("Automatic") : tr("mixed"));
         m_color->setStyleSheet(QString());
     }
     m_ccd->setChecked(lead.body.ccd);

@@ -4,7 +4,8 @@
 // says the row does not apply to it (a radius for a box, limits for a ball joint), the setter
 // changes a copy, and the form hands the change to its `Edit` callback, which pushes one command
 // for every selected object the row applies to. With several objects selected, a number whose
-// values differ shows "mixed"; a row that applies to none of them is hidden.
+// values differ shows "mixed"; a row that applies to none of them is hidden. The Inspector's own
+// rows (drop-downs, the colour button) use sharedValue for the same rule.
 
 #include "app/panels/number_field.h"
 
@@ -16,10 +17,24 @@
 #include <algorithm>
 #include <functional>
 #include <optional>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
 namespace interplay {
+
+// What `get` reads from every one of `objects`, or nothing when they differ (or there are none).
+template <typename Object, typename Get>
+auto sharedValue(const std::vector<const Object*>& objects, Get get)
+    -> std::optional<std::decay_t<decltype(get(std::declval<const Object&>()))>> {
+    std::optional<std::decay_t<decltype(get(std::declval<const Object&>()))>> shared;
+    for (const Object* object : objects) {
+        auto value = get(*object);
+        if (!shared) shared = std::move(value);
+        else if (!(value == *shared)) return std::nullopt;
+    }
+    return shared;
+}
 
 template <typename Object, typename Field>
 class PropertyRows {

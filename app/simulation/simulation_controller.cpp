@@ -64,6 +64,7 @@ bool SimulationController::build(simcore::Scene scene, QString* error) {
     m_built = std::move(built);
     m_bodyIds = m_built->bodyIds;
     m_jointIds = m_built->jointIds;
+    m_removedBodies.clear();
     m_colors.clear();
     m_colors.reserve(m_scene.bodies.size());
     for (const simcore::SceneBody& body : m_scene.bodies) m_colors.push_back(body.color);
@@ -95,10 +96,19 @@ void SimulationController::rebuildIfEditedBeforeRun() {
 bool SimulationController::insertBody(int index, const simcore::SceneBody& body, QString* error) {
     if (!m_built) return false;
     insertSceneBody(m_scene, index, body);
+    simcore::BodyCreationSettings settings = body.body;
+    // The most recent removal of this very body from this place: it returns as the run left it.
+    const auto removed = std::find_if(m_removedBodies.rbegin(), m_removedBodies.rend(), [&](const RemovedBody& r) {
+        return r.index == index && sameSceneBody(r.authored, body);
+    });
+    if (removed != m_removedBodies.rend()) {
+        settings = removed->live;
+        m_removedBodies.erase(std::next(removed).base());
+    }
     simcore::BodyId id;  // stays invalid if the engine refuses the body, so indices stay aligned
     bool created = true;
     try {
-        id = m_built->world.createBody(body.body);
+        id = m_built->world.createBody(settings);
     } catch (const std::exception& e) {
         if (error) *error = QString::fromStdString(e.what());
         created = false;
@@ -113,7 +123,17 @@ bool SimulationController::insertBody(int index, const simcore::SceneBody& body,
 void SimulationController::removeBody(int index) {
     if (!m_built) return;
     const simcore::BodyId id = m_bodyIds.at(static_cast<std::size_t>(index));
-    if (m_built->world.contains(id)) m_built->world.destroyBody(id);
+    simcore::World& world = m_built->world;
+    if (world.contains(id)) {
+        const simcore::SceneBody& authored = m_scene.bodies.at(static_cast<std::size_t>(index));
+        simcore::BodyCreationSettings live = authored.body;
+        live.position = world.position(id);
+        live.orientation = world.orientation(id);
+        live.linearVelocity = world.linearVelocity(id);
+        live.angularVelocity = world.angularVelocity(id);
+        m_removedBodies.push_back({index, authored, std::move(live)});
+        world.destroyBody(id);
+    }
     if (m_grab && m_grab->body == id) m_grab.reset();
     m_bodyIds.erase(m_bodyIds.begin() + index);
     m_colors.erase(m_colors.begin() + index);
@@ -198,12 +218,12 @@ bool SimulationController::changeBody(int index, const simcore::SceneBody& body,
 simcore::Vec3 SimulationController::livePoint(std::size_t sceneBody, const simcore::Vec3& point) const {
     const simcore::BodyCreationSettings& authored = m_scene.bodies.at(sceneBody).body;
     const simcore::BodyId id = m_bodyIds.at(sceneBody);
-    return world()->position(id) + liveDirection(sceneBody, point - authored.position);
+    return carriedPoint({authored.position, authored.orientation}, {world()->position(id), world()->orientation(id)}, point);
 }
 
 simcore::Vec3 SimulationController::liveDirection(std::size_t sceneBody, const simcore::Vec3& direction) const {
-    const simcore::Quat& authored = m_scene.bodies.at(sceneBody).body.orientation;
-    return world()->orientation(m_bodyIds.at(sceneBody)) * (glm::inverse(authored) * direction);
+    return carriedDirection(m_scene.bodies.at(sceneBody).body.orientation, world()->orientation(m_bodyIds.at(sceneBody)),
+                            direction);
 }
 
 simcore::JointId SimulationController::createLiveJoint(const simcore::SceneJoint& joint) {
@@ -482,41 +502,26 @@ void SimulationController::follow(const SceneDocument* document, const std::func
 QUndoCommand* SimulationController::simulatedPoseCommand(SceneDocument* document, QString* error) const {
     const simcore::World* live = world();
     QList<int> indices;
+    std::vector<simcore::SceneBody> bodies;
     simcore::Scene applied = document->scene();
     for (int i = 0; live && i < document->bodyCount() && i < static_cast<int>(m_bodyIds.size()); ++i) {
         const simcore::BodyId id = m_bodyIds[static_cast<std::size_t>(i)];
         if (!live->contains(id)) continue;
-        simcore::BodyCreationSettings& body = applied.bodies[static_cast<std::size_t>(i)].body;
-        body.position = live->position(id);
-        body.orientation = live->orientation(id);
-        body.linearVelocity = live->linearVelocity(id);
-        body.angularVelocity = live->angularVelocity(id);
+        simcore::SceneBody& body = applied.bodies[static_cast<std::size_t>(i)];
+        body.body.position = live->position(id);
+        body.body.orientation = live->orientation(id);
+        body.body.linearVelocity = live->linearVelocity(id);
+        body.body.angularVelocity = live->angularVelocity(id);
         indices << i;
+        bodies.push_back(body);
     }
     if (indices.isEmpty()) {
         if (error) *error = tr("There is no simulated pose to apply.");
         return nullptr;
     }
-    // Joints move with the bodies the run moved; the others keep their anchors exactly (carried
-    // through an unchanged pose they would still be rounded, and the command would not be a no-op).
-    std::vector<bool> moved(applied.bodies.size(), false);
-    for (int i : indices) {
-        const simcore::BodyCreationSettings& before = document->body(i).body;
-        const simcore::BodyCreationSettings& after = applied.bodies[static_cast<std::size_t>(i)].body;
-        moved[static_cast<std::size_t>(i)] = before.position != after.position || before.orientation != after.orientation;
-    }
-    QList<int> jointIndices;
-    for (std::size_t j = 0; j < applied.joints.size(); ++j) {
-        simcore::SceneJoint& joint = applied.joints[j];
-        const bool movesA = moved[joint.bodyA];
-        const bool movesB = joint.bodyB && moved[*joint.bodyB] && joint.joint.type == simcore::JointType::Distance;
-        if (movesA) {
-            joint.joint.anchor = livePoint(joint.bodyA, joint.joint.anchor);
-            joint.joint.axis = liveDirection(joint.bodyA, joint.joint.axis);
-        }
-        if (movesB) joint.joint.anchorB = livePoint(*joint.bodyB, joint.joint.anchorB);  // only a distance joint has one
-        if (movesA || movesB) jointIndices << static_cast<int>(j);
-    }
+    // The joints riding on the bodies go with them, as the command will carry them.
+    for (auto& [index, joint] : jointsCarriedWith(document->scene(), indices, bodies))
+        applied.joints[static_cast<std::size_t>(index)] = std::move(joint);
     // The file format's own check, so the document never holds a scene it could not reopen.
     const simcore::SceneLoadResult reloaded = simcore::parseScene(simcore::serializeScene(applied), "simulated pose");
     if (!reloaded.ok()) {
@@ -526,19 +531,8 @@ QUndoCommand* SimulationController::simulatedPoseCommand(SceneDocument* document
                                 .arg(QString::fromStdString(refusal->path), QString::fromStdString(refusal->message));
         return nullptr;
     }
-    auto* command = new QUndoCommand(tr("Apply Simulated Pose"));
-    std::vector<simcore::SceneBody> bodies;
-    for (int i : indices) bodies.push_back(applied.bodies[static_cast<std::size_t>(i)]);
-    new ChangeBodies(document, command->text(), BodyField::Pose, indices, std::move(bodies), false, command);
-    if (!jointIndices.isEmpty()) {
-        std::vector<simcore::SceneJoint> joints;
-        for (int j : jointIndices) joints.push_back(applied.joints[static_cast<std::size_t>(j)]);
-        new ChangeJoints(document, command->text(), JointField::Placement, jointIndices, std::move(joints), false, command);
-    }
-    bool unchanged = true;
-    for (int c = 0; c < command->childCount(); ++c) unchanged = unchanged && command->child(c)->isObsolete();
-    command->setObsolete(unchanged);  // applied at the authored pose: no history entry
-    return command;
+    // Applied at the authored pose the command is obsolete: pushed, it leaves no history entry.
+    return new MoveBodies(document, tr("Apply Simulated Pose"), BodyField::Pose, indices, std::move(bodies));
 }
 
 }  // namespace interplay

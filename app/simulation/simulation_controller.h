@@ -16,6 +16,9 @@
 //     joints, and its contacts keep their warm starts (a shape or motion change finds them anew);
 //   - a joint's limits, motor, spring, lengths, collide-connected flag and name go through
 //     simcore's joint setters, which keep the rest pose it was built with;
+//   - a body removed from a world that has run and inserted again where it was (Delete undone)
+//     comes back in the live state it left in (pose and velocities), so its joints, re-made as
+//     below, join it where the run had it rather than across the scene at its authored pose;
 //   - a joint added, or given new anchors or axis, is created at its bodies' live poses: its
 //     anchors and axis follow body A (a distance joint's second point follows body B), and the
 //     bodies' current relative pose becomes its rest pose until Reset restores the authored one.
@@ -192,6 +195,13 @@ private:
     std::vector<simcore::JointId> m_jointIds;
     bool m_rebuildBeforeRun = false;
     std::vector<std::optional<simcore::Vec3>> m_colors;
+    // Bodies removed from this world, with their live state, for an insertion that brings one back.
+    struct RemovedBody {
+        int index;                              // scene index it was removed from
+        simcore::SceneBody authored;            // to recognise it when it is inserted again
+        simcore::BodyCreationSettings live;     // the authored settings at the live pose and velocities
+    };
+    std::vector<RemovedBody> m_removedBodies;
     std::optional<Grab> m_grab;
     std::deque<StepSample> m_history;
     bool m_boundWarned = false;  // simulationWarning sent for this world

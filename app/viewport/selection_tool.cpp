@@ -22,7 +22,7 @@ namespace {
 // Fly speed in m/s per metre of camera distance, so flying suits a scene of any size; Shift boosts.
 constexpr float kFlySpeedPerMetre = 0.6f;
 constexpr float kFlyBoost = 4.0f;
-constexpr float kRotateDegreesPerPixel = 0.5f;  // Alt-drag turning a body about the vertical
+constexpr float kRotateDegreesPerPixel = 0.5f;  // R- or Alt-drag turning a body about the vertical
 constexpr int kClickJitterPixels = 3;           // a press that travels no further is still a click
 
 }  // namespace
@@ -99,7 +99,7 @@ void SelectionTool::pressOnBody(QMouseEvent* event, const simcore::WorldRayHit& 
         m_gesture = Gesture::Orbit;
         return;
     }
-    m_gesture = (event->modifiers() & Qt::AltModifier) ? Gesture::RotateBodies : Gesture::MoveBodies;
+    m_gesture = (m_rotateKeyHeld || (event->modifiers() & Qt::AltModifier)) ? Gesture::RotateBodies : Gesture::MoveBodies;
     m_dragIndices = m_document->selectedBodies();
     m_dragStartBodies.clear();
     for (int index : m_dragIndices) m_dragStartBodies.push_back(m_document->body(index));
@@ -137,7 +137,7 @@ void SelectionTool::dragBodies(const QPointF& position) {
     }
     // The first command of a drag starts a history entry; the rest merge into it.
     m_document->undoStack()->push(
-        new ChangeBodies(m_document, text, field, m_dragIndices, std::move(after), std::exchange(m_dragPushed, true)));
+        new MoveBodies(m_document, text, field, m_dragIndices, std::move(after), std::exchange(m_dragPushed, true)));
 }
 
 bool SelectionTool::mouseMove(QMouseEvent* event) {
@@ -215,6 +215,10 @@ void SelectionTool::wheel(QWheelEvent* event) {
 }
 
 bool SelectionTool::keyPress(QKeyEvent* event) {
+    if (event->key() == Qt::Key_R && !(event->modifiers() & ~Qt::KeypadModifier)) {
+        m_rotateKeyHeld = true;
+        return true;
+    }
     static const QSet<int> flyKeys{Qt::Key_W, Qt::Key_A, Qt::Key_S, Qt::Key_D, Qt::Key_Q, Qt::Key_E, Qt::Key_Shift};
     if (m_gesture != Gesture::Fly || !flyKeys.contains(event->key())) return false;
     m_flyKeys.insert(event->key());
@@ -222,11 +226,18 @@ bool SelectionTool::keyPress(QKeyEvent* event) {
 }
 
 bool SelectionTool::keyRelease(QKeyEvent* event) {
-    return !event->isAutoRepeat() && m_flyKeys.remove(event->key());
+    if (event->isAutoRepeat()) return false;
+    if (event->key() == Qt::Key_R && m_rotateKeyHeld) {
+        m_rotateKeyHeld = false;
+        return true;
+    }
+    return m_flyKeys.remove(event->key());
 }
 
 void SelectionTool::focusOut() {
-    m_flyKeys.clear();  // a key released in another window never reaches us
+    // A key released in another window never reaches us.
+    m_flyKeys.clear();
+    m_rotateKeyHeld = false;
 }
 
 void SelectionTool::flyTick() {

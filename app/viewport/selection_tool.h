@@ -5,8 +5,10 @@
 //                         pixels, else the body under the cursor; a joint of that body hidden
 //                         inside it takes a click on the body once the body alone is selected;
 //                         Ctrl/Shift-click adds or removes it; a click on nothing clears
-//   left drag on a body   paused: move the selection on a horizontal plane (one undo entry);
-//                         with Alt: turn it about the vertical; playing: pull it with a spring
+//   left drag on a body   paused: move the selection on a horizontal plane (one undo entry), and
+//                         the anchors of joints riding on it; with R held (or Alt, which many
+//                         Linux window managers take for moving windows): turn it about the
+//                         vertical; playing: pull it with a spring
 //   left drag elsewhere   orbit;  Shift or middle drag: pan;  wheel: zoom
 //   right drag + WASDQE   fly (Shift: faster)
 
@@ -87,6 +89,7 @@ private:
     bool m_dragPushed = false;          // the drag has pushed its first command (the rest merge)
     float m_grabDepth = 0.0f;           // grab: distance along the view ray kept while dragging (m)
 
+    bool m_rotateKeyHeld = false;       // R is down: a drag on a body turns the selection
     QSet<int> m_flyKeys;
     QTimer m_flyTimer;
     QElapsedTimer m_flyClock;
