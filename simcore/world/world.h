@@ -212,6 +212,9 @@ private:
     void clearAppliedForces();             // the step is over: added forces and torques are spent
     void wakeIndex(std::size_t i);
     void wakeContactPartners(std::size_t i);  // the bodies body i touches
+    // Body i's friction, restitution or rolling resistance changed: its contacts combine them
+    // anew, keeping their impulses, and the bodies it touches wake to feel it.
+    void materialChanged(std::size_t i);
     // After a change of what body i is (motion type, shape): its contacts go, and its proxy is
     // made anew so the next broad phase pairs it as a new body.
     void renewCollision(std::size_t i);

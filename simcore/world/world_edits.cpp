@@ -148,25 +148,25 @@ void World::setFriction(BodyId id, float friction) {
     const std::size_t i = indexOf(id);
     validateFriction(friction);
     bodies_.friction[i] = friction;
-    contactManager_.refreshMaterials(id.index, bodies_);
-    wakeIndex(i);
-    wakeContactPartners(i);
+    materialChanged(i);
 }
 
 void World::setRestitution(BodyId id, float restitution) {
     const std::size_t i = indexOf(id);
     validateRestitution(restitution);
     bodies_.restitution[i] = restitution;
-    contactManager_.refreshMaterials(id.index, bodies_);
-    wakeIndex(i);
-    wakeContactPartners(i);
+    materialChanged(i);
 }
 
 void World::setRollingResistance(BodyId id, float coefficient) {
     const std::size_t i = indexOf(id);
     validateRollingResistance(coefficient);
     bodies_.rollingResistance[i] = coefficient;
-    contactManager_.refreshMaterials(id.index, bodies_);
+    materialChanged(i);
+}
+
+void World::materialChanged(std::size_t i) {
+    contactManager_.refreshMaterials(bodies_.idAt(i).index, bodies_);
     wakeIndex(i);
     wakeContactPartners(i);
 }
