@@ -165,7 +165,8 @@ void MainWindow::createActions() {
     a = createAction(this, QStringLiteral("saveAs"), tr("Save &As…"), QKeySequence::SaveAs,
                      tr("Save the scene to a new file"));
     connect(a, &QAction::triggered, m_files, &DocumentManager::saveAs);
-    a = createAction(this, QStringLiteral("revert"), tr("Re&vert"), {}, tr("Drop unsaved changes and reload the file"));
+    a = createAction(this, QStringLiteral("revert"), tr("Re&vert"), {},
+                     tr("Go back to the saved file (asks first; Undo brings the changes back)"));
     connect(a, &QAction::triggered, m_files, &DocumentManager::revert);
     a = createAction(this, QStringLiteral("quit"), tr("&Quit"), QKeySequence::Quit, tr("Quit Interplay"));
     a->setMenuRole(QAction::QuitRole);

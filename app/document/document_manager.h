@@ -54,6 +54,8 @@ public:
     bool importThesisScene();  // asks for a scene of the 2018 thesis app among the examples
     bool save();
     bool saveAs();
+    // Asks before dropping unsaved changes, then makes the scene the file's again as one undoable
+    // step (the history stays, and the document is clean after it).
     bool revert();
     // Asks to save unsaved changes; false when the user cancels (the caller must not go on).
     bool maybeSave();
@@ -82,6 +84,8 @@ signals:
 
 private:
     bool saveTo(const QString& path);
+    // Revert without the question (the file changed on disk and the user said reload).
+    bool reloadFile();
     void addRecentFile(const QString& path);
     void watchDocumentFile();
     void documentFileChanged(const QString& path);
