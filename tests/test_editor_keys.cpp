@@ -1,25 +1,42 @@
 // The editor's keyboard and file-safety behaviour, in the whole window with real OpenGL under Xvfb
-// and real QTest key and mouse events: File → Revert asks first and is undoable.
+// and real QTest key and mouse events: File → Revert asks first and is undoable; Ctrl+Z reaches the
+// document after a field committed its value (widget and QML fields) and while a Scene tree row's
+// rename editor is open, and both Ctrl+Y and Ctrl+Shift+Z redo; Escape drops a typed value;
+// Space plays and pauses unless the focus is in a text field or a drop-down, and a drop-down
+// chosen with the mouse does not keep Space.
 
 #include "app/document/document_manager.h"
 #include "app/document/scene_document.h"
+#include "app/document/scene_tree_model.h"
 #include "app/main_window.h"
+#include "app/panels/inspector_panel.h"
+#include "app/panels/number_field.h"
+#include "app/panels/simulation_settings_model.h"
+#include "app/panels/simulation_settings_panel.h"
 #include "app/simulation/simulation_controller.h"
 #include "app/viewport/viewport.h"
 
 #include "simcore/io/scene_io.h"
 
+#include <QAbstractItemView>
 #include <QAction>
 #include <QApplication>
+#include <QComboBox>
 #include <QDir>
+#include <QDockWidget>
 #include <QFile>
+#include <QLineEdit>
+#include <QQuickItem>
+#include <QQuickWidget>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QSurfaceFormat>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTreeView>
 #include <QUndoStack>
 
+#include <functional>
 #include <memory>
 
 using interplay::DocumentManager;
@@ -28,6 +45,20 @@ using interplay::MainWindow;
 namespace {
 
 std::string sceneText(const simcore::Scene& scene) { return simcore::serializeScene(scene); }
+
+// The first item under `root` (itself included) for which `match` holds, through the visual tree:
+// a Repeater's or a popup's items have no QObject parent to find them by.
+QQuickItem* findItem(QQuickItem* root, const std::function<bool(QQuickItem*)>& match) {
+    if (match(root)) return root;
+    for (QQuickItem* child : root->childItems()) {
+        if (QQuickItem* found = findItem(child, match)) return found;
+    }
+    return nullptr;
+}
+
+QQuickItem* findNamed(QQuickItem* root, const QString& name) {
+    return findItem(root, [&](QQuickItem* item) { return item->objectName() == name; });
+}
 
 }  // namespace
 
@@ -41,8 +72,19 @@ private slots:
     void cleanup();
 
     void revertAsksFirstAndIsUndoable();
+    void undoAndRedoKeysReachTheDocumentAfterEnter();
+    void undoReachesTheDocumentWhileRenaming();
+    void escapeDropsATypedValue();
+    void qmlFieldLeavesUndoToTheDocumentAndEscapeDrops();
+    void spaceAfterChoosingAPresetPlays();
+    void spaceInAFocusedDropDownDoesNotPlay();
 
 private:
+    QQuickWidget* showSettingsPanel();
+    // Scrolls the QML panel until `item` is in view, as a user would.
+    void scrollTo(QQuickItem* item);
+    void clickItem(QQuickItem* item);
+    float friction(int body) const { return m_window->document()->body(body).body.friction; }
     QUndoStack* history() const { return m_window->document()->undoStack(); }
 
     std::unique_ptr<MainWindow> m_window;
@@ -99,6 +141,31 @@ void TestEditorKeys::cleanup() {
     m_window.reset();
 }
 
+QQuickWidget* TestEditorKeys::showSettingsPanel() {
+    auto* dock = m_window->findChild<QDockWidget*>("settingsDock");
+    dock->show();
+    dock->raise();
+    QQuickWidget* quick = m_window->settingsPanel()->quickWidget();
+    if (!QTest::qWaitFor([quick] { return quick->isVisible() && quick->width() > 100; })) return nullptr;
+    return quick;
+}
+
+void TestEditorKeys::scrollTo(QQuickItem* item) {
+    for (QQuickItem* ancestor = item->parentItem(); ancestor; ancestor = ancestor->parentItem()) {
+        if (!ancestor->inherits("QQuickFlickable")) continue;
+        auto* content = qvariant_cast<QQuickItem*>(ancestor->property("contentItem"));
+        ancestor->setProperty("contentY", std::max(0.0, item->mapToItem(content, QPointF(0, 0)).y() - 20.0));
+        break;
+    }
+    QTest::qWait(50);
+}
+
+void TestEditorKeys::clickItem(QQuickItem* item) {
+    QQuickWidget* quick = m_window->settingsPanel()->quickWidget();
+    const QPointF centre = item->mapToScene(QPointF(item->width() / 2, item->height() / 2));
+    QTest::mouseClick(quick, Qt::LeftButton, {}, centre.toPoint());
+}
+
 // ---- Defect 1: Revert --------------------------------------------------------------------------
 
 void TestEditorKeys::revertAsksFirstAndIsUndoable() {
@@ -143,6 +210,198 @@ void TestEditorKeys::revertAsksFirstAndIsUndoable() {
     m_window->action("revert")->trigger();
     QCOMPARE(m_questions.size(), 2);
     QCOMPARE(sceneText(m_window->document()->scene()), saved);
+}
+
+// ---- Defect 2: Undo and Redo from fields, Escape ----------------------------------------------------
+
+void TestEditorKeys::undoAndRedoKeysReachTheDocumentAfterEnter() {
+    m_window->document()->setSelectedBodies({1});
+    interplay::NumberField* field = m_window->inspector()->numberField("friction");
+    QVERIFY(field);
+    const float before = friction(1);
+    QTest::mouseClick(field, Qt::LeftButton);
+    QTRY_COMPARE(QApplication::focusWidget(), field);
+    field->selectAll();
+    QTest::keyClicks(field, "0.25");
+    QTest::keyClick(field, Qt::Key_Return);
+    QCOMPARE(friction(1), 0.25f);
+    QCOMPARE(QApplication::focusWidget(), field);  // Enter leaves the focus in the field
+
+    QTest::keyClick(field, Qt::Key_Z, Qt::ControlModifier);
+    QCOMPARE(friction(1), before);
+    QCOMPARE(field->text(), QString::number(double(before)));
+    QTest::keyClick(field, Qt::Key_Y, Qt::ControlModifier);
+    QCOMPARE(friction(1), 0.25f);
+    QTest::keyClick(field, Qt::Key_Z, Qt::ControlModifier);
+    QCOMPARE(friction(1), before);
+    QTest::keyClick(field, Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+    QCOMPARE(friction(1), 0.25f);
+
+    // Typing not yet committed is the field's own to undo first, as in any line edit.
+    const int entries = history()->index();
+    QTest::keyClick(field, Qt::Key_End);
+    QTest::keyClicks(field, "9");
+    QCOMPARE(field->text(), QString("0.259"));
+    QTest::keyClick(field, Qt::Key_Z, Qt::ControlModifier);
+    QCOMPARE(field->text(), QString("0.25"));
+    QCOMPARE(history()->index(), entries);
+    QCOMPARE(friction(1), 0.25f);
+}
+
+void TestEditorKeys::undoReachesTheDocumentWhileRenaming() {
+    const int bodies = m_window->document()->bodyCount();
+    m_window->action("addBox")->trigger();
+    QCOMPARE(m_window->document()->bodyCount(), bodies + 1);
+
+    QTreeView* tree = m_window->sceneTree();
+    const QModelIndex row = m_window->sceneTreeModel()->indexOfBody(0, 0);
+    tree->setFocus();
+    tree->setCurrentIndex(row);
+    QTest::keyClick(tree, Qt::Key_F2);
+    QLineEdit* editor = nullptr;
+    QTRY_VERIFY((editor = qobject_cast<QLineEdit*>(QApplication::focusWidget())) && editor->parent() == tree->viewport());
+
+    QTest::keyClick(editor, Qt::Key_Z, Qt::ControlModifier);
+    QCOMPARE(m_window->document()->bodyCount(), bodies);
+    QTest::keyClick(QApplication::focusWidget(), Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+    QCOMPARE(m_window->document()->bodyCount(), bodies + 1);
+}
+
+void TestEditorKeys::escapeDropsATypedValue() {
+    m_window->document()->setSelectedBodies({1});
+    interplay::NumberField* field = m_window->inspector()->numberField("friction");
+    const float before = friction(1);
+    const int entries = history()->count();
+    QTest::mouseClick(field, Qt::LeftButton);
+    QTRY_COMPARE(QApplication::focusWidget(), field);
+    field->selectAll();
+    QTest::keyClicks(field, "0.9");
+    QTest::keyClick(field, Qt::Key_Escape);
+    QCOMPARE(field->text(), QString::number(double(before)));
+    // Clicking away after Escape commits nothing ...
+    QTest::mouseClick(m_window->inspector()->nameField(), Qt::LeftButton);
+    QTRY_COMPARE(QApplication::focusWidget(), m_window->inspector()->nameField());
+    QCOMPARE(friction(1), before);
+    QCOMPARE(history()->count(), entries);
+
+    // ... and clicking away from a typed value still commits it.
+    QTest::mouseClick(field, Qt::LeftButton);
+    QTRY_COMPARE(QApplication::focusWidget(), field);
+    field->selectAll();
+    QTest::keyClicks(field, "0.9");
+    QTest::mouseClick(m_window->inspector()->nameField(), Qt::LeftButton);
+    QTRY_COMPARE(friction(1), 0.9f);
+    QCOMPARE(history()->count(), entries + 1);
+}
+
+void TestEditorKeys::qmlFieldLeavesUndoToTheDocumentAndEscapeDrops() {
+    QQuickWidget* quick = showSettingsPanel();
+    QVERIFY(quick);
+    QQuickItem* gravityY = findNamed(quick->rootObject(), "setting_gravity.1");
+    QVERIFY(gravityY);
+    const float before = m_window->document()->scene().settings.gravity.y;
+    scrollTo(gravityY);
+    clickItem(gravityY);
+    QTRY_VERIFY(gravityY->hasActiveFocus());
+    QTest::keyClick(quick, Qt::Key_A, Qt::ControlModifier);
+    QTest::keyClicks(quick, "-5");
+    QTest::keyClick(quick, Qt::Key_Return);
+    QCOMPARE(m_window->document()->scene().settings.gravity.y, -5.0f);
+    QVERIFY(gravityY->hasActiveFocus());
+
+    QTest::keyClick(quick, Qt::Key_Z, Qt::ControlModifier);
+    QCOMPARE(m_window->document()->scene().settings.gravity.y, before);
+    QTRY_COMPARE(gravityY->property("text").toString(), QString::number(double(before)));
+    QTest::keyClick(quick, Qt::Key_Y, Qt::ControlModifier);
+    QCOMPARE(m_window->document()->scene().settings.gravity.y, -5.0f);
+
+    // Escape drops typed text; leaving the field afterwards commits nothing.
+    const int entries = history()->count();
+    QTest::keyClick(quick, Qt::Key_A, Qt::ControlModifier);
+    QTest::keyClicks(quick, "-7");
+    QTest::keyClick(quick, Qt::Key_Escape);
+    QCOMPARE(gravityY->property("text").toString(), QString("-5"));
+    QTest::mouseClick(m_window->viewport(), Qt::LeftButton, {}, QPoint(m_window->viewport()->width() / 2, 3));
+    QTRY_VERIFY(!gravityY->hasActiveFocus());
+    QCOMPARE(m_window->document()->scene().settings.gravity.y, -5.0f);
+    QCOMPARE(history()->count(), entries);
+}
+
+// ---- Defect 3: Space and drop-downs -------------------------------------------------------------------
+
+void TestEditorKeys::spaceAfterChoosingAPresetPlays() {
+    QQuickWidget* quick = showSettingsPanel();
+    QVERIFY(quick);
+    QQuickItem* preset = findNamed(quick->rootObject(), "presetComboBox");
+    QVERIFY(preset);
+    auto* popup = qvariant_cast<QObject*>(preset->property("popup"));
+    QVERIFY(popup);
+    const QStringList names = m_window->findChild<interplay::SimulationSettingsModel*>()->presetNames();
+    QVERIFY(names.size() >= 2);
+    const int chosen = preset->property("currentIndex").toInt() == 0 ? 1 : 0;
+
+    scrollTo(preset);
+    clickItem(preset);
+    QTRY_VERIFY(popup->property("opened").toBool());
+    auto* list = qvariant_cast<QQuickItem*>(popup->property("contentItem"));
+    QVERIFY(list);
+    QQuickItem* entry = nullptr;
+    QTRY_VERIFY((entry = findItem(list, [&](QQuickItem* item) {
+        return item->inherits("QQuickAbstractButton")  // Fusion's entries are MenuItems
+                && item->property("text").toString() == names[chosen];
+    })));
+    clickItem(entry);
+    QTRY_VERIFY(!popup->property("visible").toBool());
+    QCOMPARE(preset->property("currentIndex").toInt(), chosen);
+
+    QVERIFY(!m_window->simulation()->isPlaying());
+    QTest::keyClick(QApplication::focusWidget(), Qt::Key_Space);
+    QVERIFY(m_window->simulation()->isPlaying());
+    QTest::qWait(100);
+    QVERIFY(!popup->property("visible").toBool());
+    QTest::keyClick(QApplication::focusWidget(), Qt::Key_Space);
+    QVERIFY(!m_window->simulation()->isPlaying());
+    QTest::qWait(100);
+    QVERIFY(!popup->property("visible").toBool());
+    QCOMPARE(preset->property("currentIndex").toInt(), chosen);
+}
+
+void TestEditorKeys::spaceInAFocusedDropDownDoesNotPlay() {
+    // Focus in the viewport: Space plays and pauses.
+    m_window->viewport()->setFocus();
+    QTRY_COMPARE(QApplication::focusWidget(), m_window->viewport());
+    QTest::keyClick(m_window->viewport(), Qt::Key_Space);
+    QVERIFY(m_window->simulation()->isPlaying());
+    QTest::keyClick(m_window->viewport(), Qt::Key_Space);
+    QVERIFY(!m_window->simulation()->isPlaying());
+
+    // An Inspector drop-down with the keyboard focus opens instead.
+    m_window->document()->setSelectedBodies({1});
+    QComboBox* motion = m_window->inspector()->motionBox();
+    motion->setFocus();
+    QTRY_COMPARE(QApplication::focusWidget(), motion);
+    QTest::keyClick(motion, Qt::Key_Space);
+    QVERIFY(!m_window->simulation()->isPlaying());
+    QTRY_VERIFY(motion->view()->isVisible());
+    motion->hidePopup();
+
+    // So does the QML panel's, reached with Tab.
+    QQuickWidget* quick = showSettingsPanel();
+    QVERIFY(quick);
+    QQuickItem* preset = findNamed(quick->rootObject(), "presetComboBox");
+    QVERIFY(preset);
+    auto* popup = qvariant_cast<QObject*>(preset->property("popup"));
+    scrollTo(preset);
+    quick->setFocus(Qt::TabFocusReason);
+    preset->forceActiveFocus(Qt::TabFocusReason);
+    QTRY_VERIFY(preset->hasActiveFocus());
+    const int current = preset->property("currentIndex").toInt();
+    QTest::keyClick(quick, Qt::Key_Space);
+    QVERIFY(!m_window->simulation()->isPlaying());
+    QTRY_VERIFY(popup->property("opened").toBool());
+    QTest::keyClick(quick, Qt::Key_Escape);
+    QTRY_VERIFY(!popup->property("visible").toBool());
+    QCOMPARE(preset->property("currentIndex").toInt(), current);
 }
 
 // The viewport needs GL 3.3 core, set before the application creates any window (as main() does).

@@ -1,5 +1,6 @@
 #include "app/panels/number_field.h"
 
+#include <QKeyEvent>
 #include <QLocale>
 
 #include <cmath>
@@ -48,8 +49,20 @@ std::variant<double, QString> NumberField::parse(const QString& text) const {
     return number;
 }
 
+void NumberField::keyPressEvent(QKeyEvent* event) {
+    if (event->key() == Qt::Key_Escape && text() != display()) {
+        setText(display());
+        event->accept();
+        return;
+    }
+    QLineEdit::keyPressEvent(event);
+}
+
 void NumberField::commit() {
-    if (text() == display()) return;
+    if (text() == display()) {
+        setText(display());  // forgets typing that came back to the value: Ctrl+Z is the document's
+        return;
+    }
     if (text().trimmed().isEmpty() && !m_value) return;  // left a mixed field empty: no change
     const auto parsed = parse(text());
     if (const QString* message = std::get_if<QString>(&parsed)) {

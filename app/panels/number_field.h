@@ -3,6 +3,7 @@
 // range is emitted by committed(); anything else (not a number, NaN, infinity, out of range) is
 // refused with a sentence saying why, through rejected(), and the field shows its value again.
 // An unchanged text commits nothing, so tabbing through fields never creates history entries.
+// Escape drops typed text and shows the value again, committing nothing.
 
 #include <QLineEdit>
 
@@ -30,6 +31,9 @@ public:
 signals:
     void committed(double value);
     void rejected(const QString& message);
+
+protected:
+    void keyPressEvent(QKeyEvent* event) override;
 
 private:
     void commit();
