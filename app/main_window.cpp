@@ -461,7 +461,7 @@ void MainWindow::rebuildExamplesMenu() {
         for (const QFileInfo& info : folder.entryInfoList({QStringLiteral("*.json")}, QDir::Files, QDir::Name)) {
             const QString path = info.absoluteFilePath();
             connect(menu->addAction(info.completeBaseName()), &QAction::triggered, m_files,
-                    [this, path] { m_files->open(path); });
+                    [this, path] { m_files->openExample(path); });
         }
     };
     addScenes(m_examplesMenu, dir);

@@ -3,7 +3,7 @@
 // document after a field committed its value (widget and QML fields) and while a Scene tree row's
 // rename editor is open, and both Ctrl+Y and Ctrl+Shift+Z redo; Escape drops a typed value;
 // Space plays and pauses unless the focus is in a text field or a drop-down, and a drop-down
-// chosen with the mouse does not keep Space.
+// chosen with the mouse does not keep Space; File → Examples opens untitled copies.
 
 #include "app/document/document_manager.h"
 #include "app/document/scene_document.h"
@@ -26,6 +26,7 @@
 #include <QDockWidget>
 #include <QFile>
 #include <QLineEdit>
+#include <QMenu>
 #include <QQuickItem>
 #include <QQuickWidget>
 #include <QSettings>
@@ -78,6 +79,7 @@ private slots:
     void qmlFieldLeavesUndoToTheDocumentAndEscapeDrops();
     void spaceAfterChoosingAPresetPlays();
     void spaceInAFocusedDropDownDoesNotPlay();
+    void examplesOpenAsUntitledCopies();
 
 private:
     QQuickWidget* showSettingsPanel();
@@ -402,6 +404,40 @@ void TestEditorKeys::spaceInAFocusedDropDownDoesNotPlay() {
     QTest::keyClick(quick, Qt::Key_Escape);
     QTRY_VERIFY(!popup->property("visible").toBool());
     QCOMPARE(preset->property("currentIndex").toInt(), current);
+}
+
+// ---- Defect 9: examples ----------------------------------------------------------------------------
+
+void TestEditorKeys::examplesOpenAsUntitledCopies() {
+    const QString shipped = QDir(DocumentManager::examplesDirectory()).filePath("pendulums.json");
+    QFile file(shipped);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QByteArray shippedBytes = file.readAll();
+    file.close();
+
+    auto* examples = m_window->findChild<QMenu*>("examplesMenu");
+    QVERIFY(examples);
+    QAction* pendulums = nullptr;
+    for (QAction* a : examples->actions()) {
+        if (a->text() == "pendulums") pendulums = a;
+    }
+    QVERIFY(pendulums);
+    pendulums->trigger();
+    QCOMPARE(m_window->windowTitle(), QString("[*]pendulums (example) — Interplay"));
+    QVERIFY(m_window->document()->filePath().isEmpty());
+    QVERIFY(!m_window->isWindowModified());
+    QVERIFY(m_window->document()->bodyCount() > 1);
+    QVERIFY(!m_window->documentManager()->recentFiles().contains(shipped));
+
+    // Ctrl+S asks where to save; the shipped file stays as it was.
+    m_window->action("addBox")->trigger();
+    m_fileAnswer = m_dir.filePath("my_pendulums.json");
+    QTest::keyClick(m_window->viewport(), Qt::Key_S, Qt::ControlModifier);
+    QCOMPARE(m_window->document()->filePath(), m_fileAnswer);
+    QVERIFY(!m_window->isWindowModified());
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    QCOMPARE(file.readAll(), shippedBytes);
+    QCOMPARE(m_window->windowTitle(), QString("[*]my_pendulums.json — Interplay"));
 }
 
 // The viewport needs GL 3.3 core, set before the application creates any window (as main() does).

@@ -69,13 +69,17 @@ DocumentManager::DocumentManager(SceneDocument* document, QObject* parent)
 bool DocumentManager::openFile(const QString& path, QString* error) {
     if (!m_document->load(path, error)) return false;
     addRecentFile(path);
+    reportLoadWarnings();
+    return true;
+}
+
+void DocumentManager::reportLoadWarnings() {
     const QStringList& warnings = m_document->loadWarnings();
     if (!warnings.isEmpty()) {
         emit statusMessage(
             tr("Opened with %n warning(s): %1", nullptr, static_cast<int>(warnings.size())).arg(warnings.first()),
             10000);
     }
-    return true;
 }
 
 bool DocumentManager::newScene() {
@@ -92,6 +96,18 @@ bool DocumentManager::open(const QString& path) {
                         error);
         return false;
     }
+    return true;
+}
+
+bool DocumentManager::openExample(const QString& path) {
+    if (!maybeSave()) return false;
+    QString error;
+    if (!m_document->loadExample(path, &error)) {
+        m_prompts.error(tr("Open Example"),
+                        tr("The example \"%1\" could not be opened.").arg(QFileInfo(path).fileName()), error);
+        return false;
+    }
+    reportLoadWarnings();  // not a recent file: reopening it from there would open the shipped file
     return true;
 }
 

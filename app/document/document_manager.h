@@ -50,6 +50,8 @@ public:
     // report failures through the prompts. Each returns whether it went through.
     bool newScene();
     bool open(const QString& path);
+    // A shipped example as an untitled copy ("NAME (example)"): Save asks where to write it.
+    bool openExample(const QString& path);
     bool openChosenFile();     // asks for a file, beside the current one or among the examples
     bool importThesisScene();  // asks for a scene of the 2018 thesis app among the examples
     bool save();
@@ -84,6 +86,8 @@ signals:
 
 private:
     bool saveTo(const QString& path);
+    // The last load's warnings, on the status bar.
+    void reportLoadWarnings();
     // Revert without the question (the file changed on disk and the user said reload).
     bool reloadFile();
     void addRecentFile(const QString& path);
