@@ -3,7 +3,8 @@
 // document after a field committed its value (widget and QML fields) and while a Scene tree row's
 // rename editor is open, and both Ctrl+Y and Ctrl+Shift+Z redo; Escape drops a typed value;
 // Space plays and pauses unless the focus is in a text field or a drop-down, and a drop-down
-// chosen with the mouse does not keep Space; File → Examples opens untitled copies.
+// chosen with the mouse does not keep Space; File → Examples opens untitled copies; an Inspector
+// error line moves no field and goes with the selection.
 
 #include "app/document/document_manager.h"
 #include "app/document/scene_document.h"
@@ -80,6 +81,7 @@ private slots:
     void spaceAfterChoosingAPresetPlays();
     void spaceInAFocusedDropDownDoesNotPlay();
     void examplesOpenAsUntitledCopies();
+    void inspectorErrorStaysPutAndClearsWithTheSelection();
 
 private:
     QQuickWidget* showSettingsPanel();
@@ -438,6 +440,32 @@ void TestEditorKeys::examplesOpenAsUntitledCopies() {
     QVERIFY(file.open(QIODevice::ReadOnly));
     QCOMPARE(file.readAll(), shippedBytes);
     QCOMPARE(m_window->windowTitle(), QString("[*]my_pendulums.json — Interplay"));
+}
+
+// ---- Defect 10, the smaller ones -----------------------------------------------------------------
+
+void TestEditorKeys::inspectorErrorStaysPutAndClearsWithTheSelection() {
+    m_window->document()->setSelectedBodies({1});
+    interplay::InspectorPanel* inspector = m_window->inspector();
+    interplay::NumberField* field = inspector->numberField("friction");
+    auto* message = inspector->findChild<QWidget*>("inspectorMessage");
+    QVERIFY(message);
+    QTRY_VERIFY(field->isVisible());
+    QTest::qWait(50);  // the layout settles on the new selection's header
+    const QPoint before = field->mapTo(inspector, QPoint(0, 0));
+
+    QTest::mouseClick(field, Qt::LeftButton);
+    field->selectAll();
+    QTest::keyClicks(field, "abc");
+    QTest::keyClick(field, Qt::Key_Return);
+    QVERIFY2(inspector->message().contains("not a number"), qPrintable(inspector->message()));
+    QTRY_VERIFY(message->isVisible() && message->height() > 0);
+    QTest::qWait(50);  // the layout settles
+    QCOMPARE(field->mapTo(inspector, QPoint(0, 0)), before);  // the error line moves no field
+
+    m_window->document()->setSelectedBodies({2});
+    QVERIFY(inspector->message().isEmpty());
+    QVERIFY(!message->isVisible());
 }
 
 // The viewport needs GL 3.3 core, set before the application creates any window (as main() does).
