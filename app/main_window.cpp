@@ -133,6 +133,9 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_inspector, &InspectorPanel::rejected, this, showRejection);
     connect(m_sceneActions, &SceneActions::rejected, this, showRejection);
     connect(m_files, &DocumentManager::statusMessage, statusBar(), &QStatusBar::showMessage);
+    // A long message (several load warnings, the speed bound) is cut at the permanent labels:
+    // hovering the status bar shows all of it.
+    connect(statusBar(), &QStatusBar::messageChanged, statusBar(), &QWidget::setToolTip);
 
     connect(m_simulation, &SimulationController::stepped, this, &MainWindow::updateStatus);
     connect(m_simulation, &SimulationController::worldRebuilt, this, &MainWindow::updateStatus);

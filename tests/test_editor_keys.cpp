@@ -4,7 +4,7 @@
 // rename editor is open, and both Ctrl+Y and Ctrl+Shift+Z redo; Escape drops a typed value;
 // Space plays and pauses unless the focus is in a text field or a drop-down, and a drop-down
 // chosen with the mouse does not keep Space; File → Examples opens untitled copies; an Inspector
-// error line moves no field and goes with the selection.
+// error line moves no field and goes with the selection; every load warning is shown.
 
 #include "app/document/document_manager.h"
 #include "app/document/scene_document.h"
@@ -26,11 +26,15 @@
 #include <QDir>
 #include <QDockWidget>
 #include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QLineEdit>
 #include <QMenu>
 #include <QQuickItem>
 #include <QQuickWidget>
 #include <QSettings>
+#include <QStatusBar>
 #include <QStandardPaths>
 #include <QSurfaceFormat>
 #include <QTemporaryDir>
@@ -82,6 +86,7 @@ private slots:
     void spaceInAFocusedDropDownDoesNotPlay();
     void examplesOpenAsUntitledCopies();
     void inspectorErrorStaysPutAndClearsWithTheSelection();
+    void everyLoadWarningIsShown();
 
 private:
     QQuickWidget* showSettingsPanel();
@@ -466,6 +471,35 @@ void TestEditorKeys::inspectorErrorStaysPutAndClearsWithTheSelection() {
     m_window->document()->setSelectedBodies({2});
     QVERIFY(inspector->message().isEmpty());
     QVERIFY(!message->isVisible());
+}
+
+void TestEditorKeys::everyLoadWarningIsShown() {
+    // A saved scene with three keys the loader does not know, each one warning.
+    const QString path = m_dir.filePath("typos.json");
+    QVERIFY(m_window->document()->save(path));
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    QJsonObject root = QJsonDocument::fromJson(file.readAll()).object();
+    file.close();
+    root["frobnicate"] = 1;
+    root["colour_typo"] = 2;
+    QJsonArray bodies = root["bodies"].toArray();
+    QJsonObject first = bodies[0].toObject();
+    first["spinn"] = 3;
+    bodies[0] = first;
+    root["bodies"] = bodies;
+    QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    file.write(QJsonDocument(root).toJson());
+    file.close();
+
+    QVERIFY(m_window->documentManager()->open(path));
+    QCOMPARE(m_window->document()->loadWarnings().size(), 3);
+    const QString shown = m_window->statusBar()->currentMessage();
+    for (const QString& key : QStringList{"frobnicate", "colour_typo", "spinn"}) {
+        QVERIFY2(shown.contains(key), qPrintable(key + " missing from: " + shown));
+    }
+    // Longer than the status bar has room for: the full text is its tooltip.
+    QCOMPARE(m_window->statusBar()->toolTip(), shown);
 }
 
 // The viewport needs GL 3.3 core, set before the application creates any window (as main() does).

@@ -76,9 +76,9 @@ bool DocumentManager::openFile(const QString& path, QString* error) {
 void DocumentManager::reportLoadWarnings() {
     const QStringList& warnings = m_document->loadWarnings();
     if (!warnings.isEmpty()) {
-        emit statusMessage(
-            tr("Opened with %n warning(s): %1", nullptr, static_cast<int>(warnings.size())).arg(warnings.first()),
-            10000);
+        emit statusMessage(tr("Opened with %n warning(s): %1", nullptr, static_cast<int>(warnings.size()))
+                               .arg(warnings.join(QStringLiteral("; "))),
+                           10000);
     }
 }
 
