@@ -120,15 +120,6 @@ bool SceneDocument::save(const QString& path, QString* error) {
     return true;
 }
 
-bool SceneDocument::revert(QString* error) {
-    if (m_filePath.isEmpty()) {
-        if (error) *error = tr("The scene has no file to revert to.");
-        return false;
-    }
-    const QString path = m_filePath;  // a copy: load() assigns m_filePath while reading `path`
-    return load(path, error);
-}
-
 void SceneDocument::newDefault() {
     m_loadWarnings.clear();
     m_nameWithoutFile.clear();

@@ -87,8 +87,6 @@ public:
     // Writes the scene as v1 through QSaveFile: on any failure the old file is left intact. On
     // success the document takes the path and becomes clean.
     bool save(const QString& path, QString* error = nullptr);
-    // Reloads the document's file, dropping unsaved changes and history.
-    bool revert(QString* error = nullptr);
     // Warnings of the last successful load (unknown keys and the like), one per entry.
     QStringList loadWarnings() const { return m_loadWarnings; }
 
