@@ -4,7 +4,8 @@
 // rename editor is open, and both Ctrl+Y and Ctrl+Shift+Z redo; Escape drops a typed value;
 // Space plays and pauses unless the focus is in a text field or a drop-down, and a drop-down
 // chosen with the mouse does not keep Space; File → Examples opens untitled copies; an Inspector
-// error line moves no field and goes with the selection; every load warning is shown.
+// error line moves no field and goes with the selection; every load warning is shown; number
+// fields show as many digits as fit.
 
 #include "app/document/document_manager.h"
 #include "app/document/scene_document.h"
@@ -87,6 +88,7 @@ private slots:
     void examplesOpenAsUntitledCopies();
     void inspectorErrorStaysPutAndClearsWithTheSelection();
     void everyLoadWarningIsShown();
+    void fieldsShowNumbersThatFit();
 
 private:
     QQuickWidget* showSettingsPanel();
@@ -500,6 +502,42 @@ void TestEditorKeys::everyLoadWarningIsShown() {
     }
     // Longer than the status bar has room for: the full text is its tooltip.
     QCOMPARE(m_window->statusBar()->toolTip(), shown);
+}
+
+void TestEditorKeys::fieldsShowNumbersThatFit() {
+    m_window->document()->setSelectedBodies({1});
+    interplay::InspectorPanel* inspector = m_window->inspector();
+    const auto fits = [](const QLineEdit* field) {
+        return field->fontMetrics().horizontalAdvance(field->text()) < field->contentsRect().width();
+    };
+    // A wide field shows six digits.
+    interplay::NumberField* friction = inspector->numberField("friction");
+    QTRY_VERIFY(friction->isVisible());
+    QTest::mouseClick(friction, Qt::LeftButton);
+    friction->selectAll();
+    QTest::keyClicks(friction, "0.123456");
+    QTest::keyClick(friction, Qt::Key_Return);
+    QCOMPARE(friction->text(), QString("0.123456"));
+
+    // A vector component too narrow for six digits of 1.29314e-06 shows fewer, never a cut tail;
+    // the tooltip has the six.
+    interplay::NumberField* x = inspector->numberField("position.x");
+    QTest::mouseClick(x, Qt::LeftButton);
+    x->selectAll();
+    QTest::keyClicks(x, "1.29314e-06");
+    QTest::keyClick(x, Qt::Key_Return);
+    QCOMPARE(m_window->document()->body(1).body.position.x, 1.29314e-06f);
+    QVERIFY2(fits(x), qPrintable(x->text()));
+    const auto shown = x->parse(x->text());
+    QVERIFY(std::holds_alternative<double>(shown));
+    QVERIFY(std::abs(std::get<double>(shown) - 1.29314e-06) < 0.1e-06);
+    QVERIFY2(x->toolTip().contains("1.29314e-06"), qPrintable(x->toolTip()));
+    // Tabbing through the shortened text changes nothing.
+    const int entries = history()->count();
+    QTest::mouseClick(x, Qt::LeftButton);
+    QTest::keyClick(x, Qt::Key_Return);
+    QCOMPARE(history()->count(), entries);
+    QCOMPARE(m_window->document()->body(1).body.position.x, 1.29314e-06f);
 }
 
 // The viewport needs GL 3.3 core, set before the application creates any window (as main() does).

@@ -34,14 +34,23 @@ signals:
 
 protected:
     void keyPressEvent(QKeyEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
 
 private:
     void commit();
+    // The value as the field shows it: six significant digits, or as many as fit its width.
     QString display() const;
+    int textWidth() const;  // pixels the text has inside the frame
+    void showValue();       // shows display(), and the full value in the tooltip
+    void updateToolTip();   // the quantity, its value to six digits and the accepted range
+
+    static constexpr int kDigits = 6;
+    static constexpr int kFewestDigits = 2;
 
     QString m_quantity;  // what the number is, for messages: "Friction", "Radius"
     double m_minimum, m_maximum;
     std::optional<double> m_value;
+    QString m_shown;  // the text showValue() put in the field: anything else is the user's
 };
 
 }  // namespace interplay
