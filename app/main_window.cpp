@@ -19,15 +19,19 @@
 #include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
+#include <QComboBox>
 #include <QDir>
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QHeaderView>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
+#include <QQuickItem>
+#include <QQuickWidget>
 #include <QSettings>
 #include <QStatusBar>
 #include <QStyle>
@@ -75,6 +79,20 @@ DocumentManager::Prompts dialogPrompts(QWidget* parent) {
     return prompts;
 }
 
+// Whether a text field has typing of its own to undo (or redo): QLineEdit's, or Qt Quick's
+// TextInput's canUndo. A field whose text is committed has none (showing a value resets it).
+bool hasOwnTextHistory(const QObject* target, bool undo) {
+    if (const auto* edit = qobject_cast<const QLineEdit*>(target)) {
+        return undo ? edit->isUndoAvailable() : edit->isRedoAvailable();
+    }
+    const QVariant quick = target->property(undo ? "canUndo" : "canRedo");
+    return quick.isValid() && quick.toBool();
+}
+
+bool isDropDown(const QObject* target) {
+    return qobject_cast<const QComboBox*>(target) || target->inherits("QQuickComboBox");
+}
+
 }  // namespace
 
 MainWindow::MainWindow(QWidget* parent)
@@ -115,6 +133,9 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_inspector, &InspectorPanel::rejected, this, showRejection);
     connect(m_sceneActions, &SceneActions::rejected, this, showRejection);
     connect(m_files, &DocumentManager::statusMessage, statusBar(), &QStatusBar::showMessage);
+    // A long message (several load warnings, the speed bound) is cut at the permanent labels:
+    // hovering the status bar shows all of it.
+    connect(statusBar(), &QStatusBar::messageChanged, statusBar(), &QWidget::setToolTip);
 
     connect(m_simulation, &SimulationController::stepped, this, &MainWindow::updateStatus);
     connect(m_simulation, &SimulationController::worldRebuilt, this, &MainWindow::updateStatus);
@@ -123,6 +144,10 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_simulation, &SimulationController::simulationWarning, this,
             [this](const QString& message) { statusBar()->showMessage(message, 15000); });
 
+    // Text fields claim Ctrl+Z even with nothing of theirs to undo, and Space reaches the play
+    // shortcut before a focused drop-down: the filter decides who gets these keys (eventFilter).
+    qApp->installEventFilter(this);
+
     resize(1440, 900);
     restoreLayout();
     updateTitle();
@@ -130,6 +155,7 @@ MainWindow::MainWindow(QWidget* parent)
 }
 
 MainWindow::~MainWindow() {
+    qApp->removeEventFilter(this);  // it reads the panels destroyed below
     // The document is a child, destroyed after this destructor with its siblings: nothing it emits
     // on the way may reach the window or a listener half destroyed.
     m_document->disconnect();
@@ -165,7 +191,8 @@ void MainWindow::createActions() {
     a = createAction(this, QStringLiteral("saveAs"), tr("Save &As…"), QKeySequence::SaveAs,
                      tr("Save the scene to a new file"));
     connect(a, &QAction::triggered, m_files, &DocumentManager::saveAs);
-    a = createAction(this, QStringLiteral("revert"), tr("Re&vert"), {}, tr("Drop unsaved changes and reload the file"));
+    a = createAction(this, QStringLiteral("revert"), tr("Re&vert"), {},
+                     tr("Go back to the saved file (asks first; Undo brings the changes back)"));
     connect(a, &QAction::triggered, m_files, &DocumentManager::revert);
     a = createAction(this, QStringLiteral("quit"), tr("&Quit"), QKeySequence::Quit, tr("Quit Interplay"));
     a->setMenuRole(QAction::QuitRole);
@@ -178,7 +205,13 @@ void MainWindow::createActions() {
     undo->setIcon(QIcon::fromTheme(QStringLiteral("edit-undo"), s->standardIcon(QStyle::SP_ArrowBack)));
     QAction* redo = m_document->undoStack()->createRedoAction(this, tr("&Redo"));
     redo->setObjectName(QStringLiteral("redo"));
-    redo->setShortcut(QKeySequence::Redo);
+    // Ctrl+Y and Ctrl+Shift+Z both, whatever the platform's own binding is (Blender, Godot and
+    // Windows users reach for either).
+    QList<QKeySequence> redoKeys = QKeySequence::keyBindings(QKeySequence::Redo);
+    for (const QKeySequence& key : {QKeySequence(Qt::CTRL | Qt::Key_Y), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z)}) {
+        if (!redoKeys.contains(key)) redoKeys << key;
+    }
+    redo->setShortcuts(redoKeys);
     redo->setIcon(QIcon::fromTheme(QStringLiteral("edit-redo"), s->standardIcon(QStyle::SP_ArrowForward)));
     // The scene's edit actions are SceneActions'; the window gives them its theme's icons.
     m_sceneActions->deleteAction()->setIcon(
@@ -432,7 +465,7 @@ void MainWindow::rebuildExamplesMenu() {
         for (const QFileInfo& info : folder.entryInfoList({QStringLiteral("*.json")}, QDir::Files, QDir::Name)) {
             const QString path = info.absoluteFilePath();
             connect(menu->addAction(info.completeBaseName()), &QAction::triggered, m_files,
-                    [this, path] { m_files->open(path); });
+                    [this, path] { m_files->openExample(path); });
         }
     };
     addScenes(m_examplesMenu, dir);
@@ -525,6 +558,31 @@ void MainWindow::showSimulationError(const QString& message) {
 }
 
 // ---- Window events ----------------------------------------------------------------------------------
+
+bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
+    // Before any shortcut fires, Qt asks the focus widget whether it wants the key itself.
+    if (event->type() != QEvent::ShortcutOverride) return QMainWindow::eventFilter(watched, event);
+    // A widget of this window, or an item of its QML panel (QQuickWidget makes its focus item the
+    // receiver of keys).
+    const auto* widget = qobject_cast<QWidget*>(watched);
+    const auto* item = qobject_cast<QQuickItem*>(watched);
+    if (!(widget && widget->window() == this) &&
+        !(item && item->window() == m_settingsPanel->quickWidget()->quickWindow())) {
+        return false;
+    }
+    auto* key = static_cast<QKeyEvent*>(event);
+    const bool undo = key->matches(QKeySequence::Undo);
+    const bool redo = action(QStringLiteral("redo"))->shortcuts().contains(QKeySequence(key->keyCombination()));
+    if ((undo || redo) && !hasOwnTextHistory(watched, undo)) {
+        key->ignore();  // a committed field leaves Undo and Redo to the document's history
+        return true;
+    }
+    if (key->key() == Qt::Key_Space && key->modifiers() == Qt::NoModifier && isDropDown(watched)) {
+        key->accept();  // a focused drop-down opens on Space instead of playing
+        return true;
+    }
+    return false;
+}
 
 void MainWindow::closeEvent(QCloseEvent* event) {
     if (!m_files->maybeSave()) {

@@ -56,6 +56,9 @@ public:
     void arrangeDefaultLayout();
 
 protected:
+    // Undo and Redo reach the document unless a text field has typing of its own to undo; Space
+    // plays unless the focus is in a text field or drop-down.
+    bool eventFilter(QObject* watched, QEvent* event) override;
     void closeEvent(QCloseEvent* event) override;
     void dragEnterEvent(QDragEnterEvent* event) override;
     void dropEvent(QDropEvent* event) override;

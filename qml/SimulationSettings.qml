@@ -32,22 +32,27 @@ Pane {
 
     // A number field: shows `value`, commits on Enter or focus loss. Text that is not a number is
     // handed to the model too, which rejects it with a message (and the field shows the old value).
+    // Escape drops typed text and shows the value again.
     component NumberField: TextField {
         id: numberField
         property real value: 0
+        readonly property string shown: Number(value).toLocaleString(Qt.locale("C"), "g", 6)
         signal committed(real number)
-        text: Number(value).toLocaleString(Qt.locale("C"), "g", 6)
+        text: shown
         horizontalAlignment: TextInput.AlignRight
         selectByMouse: true
         Layout.fillWidth: true
         Layout.preferredWidth: 60
+        Keys.onEscapePressed: (event) => {
+            event.accepted = text !== shown
+            text = Qt.binding(() => shown)
+        }
         onEditingFinished: {
-            const shown = Number(value).toLocaleString(Qt.locale("C"), "g", 6)
             if (text.trim() !== shown) {  // tabbing through a field changes nothing
                 const number = Number(text.trim())
                 committed(text.trim() === "" ? NaN : number)
             }
-            text = Qt.binding(() => Number(value).toLocaleString(Qt.locale("C"), "g", 6))
+            text = Qt.binding(() => shown)
         }
     }
 
@@ -70,6 +75,9 @@ Pane {
                     ComboBox {
                         id: presetBox
                         objectName: "presetComboBox"
+                        // A click leaves the focus where it was, so Space still plays after a
+                        // choice; Tab reaches it for the keyboard (then Space opens it).
+                        focusPolicy: Qt.TabFocus
                         Layout.fillWidth: true
                         model: settingsModel.presetNames
                         currentIndex: settingsModel.preset
@@ -189,6 +197,7 @@ Pane {
                                 id: choiceEditor
                                 ComboBox {
                                     objectName: "setting_" + field.key
+                                    focusPolicy: Qt.TabFocus  // as the preset's
                                     model: field.choices
                                     currentIndex: field.value
                                     onActivated: (index) => settingsModel.setValue(field.key, index)

@@ -2,7 +2,7 @@
 // undo, redo, merging and the clean state) and per panel model, each short.
 // The editor's document layer without a window: every undo command (add, remove, reorder, change
 // bodies, add/change/delete joints, change settings) with undo/redo, merging of continuous edits,
-// the clean state and what "modified" means, open/save/revert round trips, thesis import, load
+// the clean state and what "modified" means, open/save round trips, thesis import, load
 // errors, and the panels' editing models (inspector rows for bodies and joints, simulation
 // settings) pushing commands and refusing bad input.
 
@@ -103,7 +103,6 @@ private slots:
 
     void saveLoadRoundTripIsExact();
     void failedSaveLeavesTheOldFile();
-    void revertDropsChangesAndHistory();
     void thesisSceneIsImportedWithoutAPath();
     void loadErrorNamesFileAndJsonPath();
 
@@ -565,25 +564,6 @@ void TestDocument::failedSaveLeavesTheOldFile() {
 
     QVERIFY(!m_document.save(m_dir.filePath("no/such/folder/scene.json"), &error));
     QVERIFY(!QFile::exists(m_dir.filePath("no/such/folder/scene.json")));
-}
-
-void TestDocument::revertDropsChangesAndHistory() {
-    const QString path = m_dir.filePath("revert.json");
-    QVERIFY(m_document.save(path));
-    const std::string saved = text(m_document.scene());
-    pushMove(m_document, 1, {5, 0, 0}, false);
-    m_document.undoStack()->push(new RemoveBodies(&m_document, {2}));
-    QVERIFY(m_document.isModified());
-    QString error;
-    QVERIFY2(m_document.revert(&error), qPrintable(error));
-    QCOMPARE(text(m_document.scene()), saved);
-    QVERIFY(!m_document.isModified());
-    QCOMPARE(m_document.undoStack()->count(), 0);
-
-    SceneDocument untitled;
-    untitled.newDefault();
-    QVERIFY(!untitled.revert(&error));
-    QVERIFY(!error.isEmpty());
 }
 
 void TestDocument::thesisSceneIsImportedWithoutAPath() {

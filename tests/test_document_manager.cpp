@@ -1,12 +1,14 @@
 // DocumentManager on its own, under a QCoreApplication: the model layer's file handling needs no
 // window and no GUI. Without prompts set it never loses work (every question answered as
-// cancelled); with them, Save As, recent files, autosave and recovery work as in the editor
+// cancelled); with them, Save As, Revert, recent files, autosave and recovery work as in the editor
 // (test_main_window covers them through the window's menus).
 
 #include "app/document/body_templates.h"
 #include "app/document/document_manager.h"
 #include "app/document/scene_document.h"
 #include "app/document/undo_commands.h"
+
+#include "simcore/io/scene_io.h"
 
 #include <QFile>
 #include <QSettings>
@@ -41,6 +43,7 @@ private slots:
     void unansweredQuestionsKeepTheWork();
     void saveAsRecordsTheFileAndReportsNothingToRecover();
     void autosaveIsRecoveredIntoAFreshDocument();
+    void revertAsksAndKeepsTheHistory();
 
 private:
     QTemporaryDir m_dir;
@@ -132,6 +135,38 @@ void TestDocumentManager::autosaveIsRecoveredIntoAFreshDocument() {
     QCOMPARE(document.bodyCount(), bodies);
     QCOMPARE(document.filePath(), path);  // Save goes back to the file the work belongs to
     QVERIFY(document.isModified());
+}
+
+void TestDocumentManager::revertAsksAndKeepsTheHistory() {
+    SceneDocument document;
+    DocumentManager files(&document);
+    document.newDefault();
+    QVERIFY(!files.revert());  // no file to go back to
+    const QString path = m_dir.filePath("revert.json");
+    QVERIFY(document.save(path));
+    const std::string saved = simcore::serializeScene(document.scene());
+    addBox(document);
+    document.undoStack()->push(new interplay::RemoveBodies(&document, {1}));
+    const std::string edited = simcore::serializeScene(document.scene());
+
+    QVERIFY(!files.revert());  // unanswered: the work stays
+    QCOMPARE(simcore::serializeScene(document.scene()), edited);
+
+    QStringList questions;
+    files.prompts().confirm = [&](const QString&, const QString& question) {
+        questions << question;
+        return true;
+    };
+    QVERIFY(files.revert());
+    QCOMPARE(questions.size(), 1);
+    QCOMPARE(simcore::serializeScene(document.scene()), saved);
+    QVERIFY(!document.isModified());
+    document.undoStack()->undo();
+    QCOMPARE(simcore::serializeScene(document.scene()), edited);
+    QVERIFY(document.isModified());
+    document.undoStack()->undo();  // the history before the revert is intact
+    document.undoStack()->undo();
+    QCOMPARE(simcore::serializeScene(document.scene()), saved);
 }
 
 QTEST_GUILESS_MAIN(TestDocumentManager)

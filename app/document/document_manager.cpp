@@ -1,6 +1,7 @@
 #include "app/document/document_manager.h"
 
 #include "app/document/scene_document.h"
+#include "app/document/undo_commands.h"
 
 #include "simcore/io/scene_io.h"
 
@@ -13,7 +14,10 @@
 #include <QSettings>
 #include <QStandardPaths>
 #include <QTimer>
+#include <QUndoStack>
 #include <QtDebug>
+
+#include <numeric>
 
 namespace interplay {
 namespace {
@@ -65,13 +69,17 @@ DocumentManager::DocumentManager(SceneDocument* document, QObject* parent)
 bool DocumentManager::openFile(const QString& path, QString* error) {
     if (!m_document->load(path, error)) return false;
     addRecentFile(path);
+    reportLoadWarnings();
+    return true;
+}
+
+void DocumentManager::reportLoadWarnings() {
     const QStringList& warnings = m_document->loadWarnings();
     if (!warnings.isEmpty()) {
-        emit statusMessage(
-            tr("Opened with %n warning(s): %1", nullptr, static_cast<int>(warnings.size())).arg(warnings.first()),
-            10000);
+        emit statusMessage(tr("Opened with %n warning(s): %1", nullptr, static_cast<int>(warnings.size()))
+                               .arg(warnings.join(QStringLiteral("; "))),
+                           10000);
     }
-    return true;
 }
 
 bool DocumentManager::newScene() {
@@ -88,6 +96,18 @@ bool DocumentManager::open(const QString& path) {
                         error);
         return false;
     }
+    return true;
+}
+
+bool DocumentManager::openExample(const QString& path) {
+    if (!maybeSave()) return false;
+    QString error;
+    if (!m_document->loadExample(path, &error)) {
+        m_prompts.error(tr("Open Example"),
+                        tr("The example \"%1\" could not be opened.").arg(QFileInfo(path).fileName()), error);
+        return false;
+    }
+    reportLoadWarnings();  // not a recent file: reopening it from there would open the shipped file
     return true;
 }
 
@@ -133,11 +153,46 @@ bool DocumentManager::saveAs() {
 
 bool DocumentManager::revert() {
     if (m_document->filePath().isEmpty()) return false;
+    // Undo brings the edits back, but they would vanish from view on a stray click: ask first.
+    if (m_document->isModified() &&
+        !m_prompts.confirm(tr("Revert"), tr("Drop the unsaved changes to \"%1\" and go back to the saved file? "
+                                            "Edit → Undo brings them back.")
+                                             .arg(m_document->displayName()))) {
+        return false;
+    }
+    return reloadFile();
+}
+
+bool DocumentManager::reloadFile() {
+    SceneDocument saved;  // reads the file as Open would, without touching the document
     QString error;
-    if (!m_document->revert(&error)) {
+    if (!saved.load(m_document->filePath(), &error)) {
         m_prompts.error(tr("Revert"), tr("The file could not be read again; the scene is as it was."), error);
         return false;
     }
+    const simcore::Scene& scene = saved.scene();
+    QUndoStack* history = m_document->undoStack();
+    if (simcore::serializeScene(scene) != simcore::serializeScene(m_document->scene())) {
+        // One undoable step made of the ordinary edits, as text editors and Qt Creator revert: the
+        // history before it stays, so the dropped changes are one Undo away.
+        history->beginMacro(tr("Revert to \"%1\"").arg(m_document->displayName()));
+        QList<int> bodies(m_document->bodyCount()), joints(m_document->jointCount());
+        std::iota(bodies.begin(), bodies.end(), 0);
+        std::iota(joints.begin(), joints.end(), 0);
+        if (!bodies.isEmpty() || !joints.isEmpty()) history->push(new RemoveBodies(m_document, bodies, joints));
+        QList<int> savedBodies(static_cast<qsizetype>(scene.bodies.size()));
+        std::iota(savedBodies.begin(), savedBodies.end(), 0);
+        if (!savedBodies.isEmpty()) history->push(new AddBodies(m_document, tr("Add Bodies"), savedBodies, scene.bodies));
+        for (std::size_t i = 0; i < scene.joints.size(); ++i) {
+            history->push(new AddJoint(m_document, tr("Add Joint"), static_cast<int>(i), scene.joints[i]));
+        }
+        if (!(scene.settings == m_document->scene().settings)) {
+            history->push(new ChangeSettings(m_document, tr("Settings"), QString(), scene.settings));
+        }
+        history->endMacro();
+        m_document->setSelection({}, {});
+    }
+    history->setClean();  // the scene is the file's again
     removeRecoveryFile();
     return true;
 }
@@ -203,7 +258,7 @@ void DocumentManager::documentFileChanged(const QString& path) {
         m_document->isModified()
             ? tr("\"%1\" was changed by another program. Reload it and lose your unsaved changes?").arg(name)
             : tr("\"%1\" was changed by another program. Reload it?").arg(name);
-    if (m_prompts.confirm(tr("File Changed"), question)) revert();
+    if (m_prompts.confirm(tr("File Changed"), question)) reloadFile();
 }
 
 QString DocumentManager::recoveryFilePath() {

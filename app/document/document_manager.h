@@ -50,10 +50,14 @@ public:
     // report failures through the prompts. Each returns whether it went through.
     bool newScene();
     bool open(const QString& path);
+    // A shipped example as an untitled copy ("NAME (example)"): Save asks where to write it.
+    bool openExample(const QString& path);
     bool openChosenFile();     // asks for a file, beside the current one or among the examples
     bool importThesisScene();  // asks for a scene of the 2018 thesis app among the examples
     bool save();
     bool saveAs();
+    // Asks before dropping unsaved changes, then makes the scene the file's again as one undoable
+    // step (the history stays, and the document is clean after it).
     bool revert();
     // Asks to save unsaved changes; false when the user cancels (the caller must not go on).
     bool maybeSave();
@@ -82,6 +86,10 @@ signals:
 
 private:
     bool saveTo(const QString& path);
+    // The last load's warnings, on the status bar.
+    void reportLoadWarnings();
+    // Revert without the question (the file changed on disk and the user said reload).
+    bool reloadFile();
     void addRecentFile(const QString& path);
     void watchDocumentFile();
     void documentFileChanged(const QString& path);

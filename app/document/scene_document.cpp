@@ -38,7 +38,7 @@ SceneDocument::~SceneDocument() {
 
 QString SceneDocument::displayName() const {
     if (!m_filePath.isEmpty()) return QFileInfo(m_filePath).fileName();
-    if (!m_importedName.isEmpty()) return tr("%1 (imported)").arg(m_importedName);
+    if (!m_nameWithoutFile.isEmpty()) return m_nameWithoutFile;
     return tr("Untitled");
 }
 
@@ -84,12 +84,20 @@ bool SceneDocument::load(const QString& path, QString* error) {
     m_loadWarnings = warnings;
     const QFileInfo info(path);
     if (isThesisFormat(text)) {
-        m_importedName = info.fileName();
+        m_nameWithoutFile = tr("%1 (imported)").arg(info.fileName());
         replaceScene(std::move(*result.scene), QString(), true);
     } else {
-        m_importedName.clear();
+        m_nameWithoutFile.clear();
         replaceScene(std::move(*result.scene), info.absoluteFilePath(), false);
     }
+    return true;
+}
+
+bool SceneDocument::loadExample(const QString& path, QString* error) {
+    if (!load(path, error)) return false;
+    if (m_filePath.isEmpty()) return true;  // a thesis scene is imported without its path already
+    m_nameWithoutFile = tr("%1 (example)").arg(QFileInfo(m_filePath).completeBaseName());
+    setFilePath(QString());
     return true;
 }
 
@@ -105,25 +113,16 @@ bool SceneDocument::save(const QString& path, QString* error) {
         if (error) *error = tr("%1 could not be written: %2").arg(path, file.errorString());
         return false;
     }
-    m_importedName.clear();
+    m_nameWithoutFile.clear();
     setFilePath(QFileInfo(path).absoluteFilePath());
     m_undoStack->setClean();
     emit saved(m_filePath);
     return true;
 }
 
-bool SceneDocument::revert(QString* error) {
-    if (m_filePath.isEmpty()) {
-        if (error) *error = tr("The scene has no file to revert to.");
-        return false;
-    }
-    const QString path = m_filePath;  // a copy: load() assigns m_filePath while reading `path`
-    return load(path, error);
-}
-
 void SceneDocument::newDefault() {
     m_loadWarnings.clear();
-    m_importedName.clear();
+    m_nameWithoutFile.clear();
     replaceScene(simcore::defaultScene(), QString(), false);
 }
 
@@ -131,13 +130,13 @@ void SceneDocument::newEmpty() {
     simcore::Scene scene = simcore::defaultScene();
     std::erase_if(scene.bodies, [](const simcore::SceneBody& b) { return b.body.motion != simcore::MotionType::Static; });
     m_loadWarnings.clear();
-    m_importedName.clear();
+    m_nameWithoutFile.clear();
     replaceScene(std::move(scene), QString(), false);
 }
 
 void SceneDocument::restoreRecovered(simcore::Scene scene, const QString& originalPath) {
     m_loadWarnings.clear();
-    m_importedName.clear();
+    m_nameWithoutFile.clear();
     replaceScene(std::move(scene), originalPath, true);
 }
 

@@ -71,7 +71,8 @@ public:
 
     // Absolute path of the file the scene is saved in; empty for a new or imported scene.
     QString filePath() const { return m_filePath; }
-    // File name for titles; "Untitled" for a new scene, "NAME (imported)" for a thesis import.
+    // File name for titles; "Untitled" for a new scene, "NAME (imported)" for a thesis import,
+    // "NAME (example)" for an example.
     QString displayName() const;
     bool isModified() const;
 
@@ -80,11 +81,12 @@ public:
     // A thesis scene is imported: it gets no file path (Save asks where to write v1) and starts
     // modified.
     bool load(const QString& path, QString* error = nullptr);
+    // Reads a shipped example as load() does, as an untitled copy: no file path (Save asks where,
+    // so the example is never overwritten), clean, titled "NAME (example)".
+    bool loadExample(const QString& path, QString* error = nullptr);
     // Writes the scene as v1 through QSaveFile: on any failure the old file is left intact. On
     // success the document takes the path and becomes clean.
     bool save(const QString& path, QString* error = nullptr);
-    // Reloads the document's file, dropping unsaved changes and history.
-    bool revert(QString* error = nullptr);
     // Warnings of the last successful load (unknown keys and the like), one per entry.
     QStringList loadWarnings() const { return m_loadWarnings; }
 
@@ -160,7 +162,8 @@ private:
     simcore::Scene m_scene;
     QUndoStack* m_undoStack = nullptr;
     QString m_filePath;
-    QString m_importedName;  // file name of an imported thesis scene, for the title
+    // The title of a scene read from a file it is not saved to: "NAME (imported)", "NAME (example)".
+    QString m_nameWithoutFile;
     QStringList m_loadWarnings;
     QList<int> m_selection;
     QList<int> m_selectedJoints;

@@ -169,7 +169,6 @@ InspectorPanel::InspectorPanel(SceneDocument* document, QWidget* parent)
     m_message->setStyleSheet(QStringLiteral("color: #b3261e;"));
     m_message->hide();
     outer->addWidget(m_header);
-    outer->addWidget(m_message);
     auto* forms = new QWidget;
     auto* formsLayout = new QVBoxLayout(forms);
     formsLayout->setContentsMargins(0, 0, 0, 0);
@@ -187,6 +186,8 @@ InspectorPanel::InspectorPanel(SceneDocument* document, QWidget* parent)
     scroll->setFrameShape(QFrame::NoFrame);
     scroll->setWidget(forms);
     outer->addWidget(scroll, 1);
+    // Below the fields, so that a message appearing does not move the field being edited.
+    outer->addWidget(m_message);
 
     createBodyRows();
     createJointRows();
@@ -199,6 +200,8 @@ InspectorPanel::InspectorPanel(SceneDocument* document, QWidget* parent)
             if (NumberField* number = numberField(part)) number->setProperty("schemaKeys", schemaKeys);
     }
 
+    // A refusal is about the fields it came from: another selection's fields are not refused.
+    connect(document, &SceneDocument::selectionChanged, m_message, &QWidget::hide);
     connect(document, &SceneDocument::selectionChanged, this, &InspectorPanel::refresh);
     connect(document, &SceneDocument::sceneReplaced, this, &InspectorPanel::refresh);
     connect(document, &SceneDocument::bodyChanged, this, [this](int index) {

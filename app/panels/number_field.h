@@ -3,6 +3,7 @@
 // range is emitted by committed(); anything else (not a number, NaN, infinity, out of range) is
 // refused with a sentence saying why, through rejected(), and the field shows its value again.
 // An unchanged text commits nothing, so tabbing through fields never creates history entries.
+// Escape drops typed text and shows the value again, committing nothing.
 
 #include <QLineEdit>
 
@@ -31,13 +32,25 @@ signals:
     void committed(double value);
     void rejected(const QString& message);
 
+protected:
+    void keyPressEvent(QKeyEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
+
 private:
     void commit();
+    // The value as the field shows it: six significant digits, or as many as fit its width.
     QString display() const;
+    int textWidth() const;  // pixels the text has inside the frame
+    void showValue();       // shows display(), and the full value in the tooltip
+    void updateToolTip();   // the quantity, its value to six digits and the accepted range
+
+    static constexpr int kDigits = 6;
+    static constexpr int kFewestDigits = 2;
 
     QString m_quantity;  // what the number is, for messages: "Friction", "Radius"
     double m_minimum, m_maximum;
     std::optional<double> m_value;
+    QString m_shown;  // the text showValue() put in the field: anything else is the user's
 };
 
 }  // namespace interplay
