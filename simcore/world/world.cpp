@@ -188,7 +188,7 @@ void World::step() {
         params.gravity = velocityParams.gravity;
         params.solver = settings_.solver;
         params.contact = settings_.contact;
-        contactSolver_.prepare(contactManager_.contacts(), bodies_, params);
+        contactSolver_.prepare(contactManager_.contacts(), bodies_, params, *pool_);
     }
     if (joints) {
         if (!contacts) {
