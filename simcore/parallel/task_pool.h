@@ -79,10 +79,10 @@ private:
     std::vector<std::uint64_t> chunkSums_;  // parallelSum's, by chunk; reused
     std::mutex mutex_;
     std::condition_variable wake_, finished_;
-    Job job_;                                // guarded by mutex_ while workers are told of it
-    std::uint64_t generation_ = 0;           // guarded by mutex_: counts jobs, so a worker sees each once
+    Job job_;                                // written by run() only while no worker is in a job
+    std::uint64_t generation_ = 0;           // guarded by mutex_: odd while a job is open to workers
     std::atomic<std::size_t> nextChunk_{0};  // the next chunk nobody has taken yet
-    int busyWorkers_ = 0;  // guarded by mutex_: workers still inside the current job
+    int busyWorkers_ = 0;  // guarded by mutex_: workers that joined the current job and have not left
     bool stopping_ = false;
 };
 
