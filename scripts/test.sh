@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
-# Installs, builds and runs every test, in three stages that each also run alone:
+# Installs, builds and runs every test, in four stages that each also run alone:
 #   1. the ctest suites, Release (build/);
 #   2. the same suites under AddressSanitizer + UndefinedBehaviorSanitizer (scripts/test-sanitizers.sh,
 #      build-asan/);
-#   3. a short libFuzzer run of every fuzz target (scripts/fuzz.sh; FUZZ_SECONDS=N per target, default 30
+#   3. the multi-threaded step under ThreadSanitizer (scripts/test-tsan.sh, build-tsan/);
+#   4. a short libFuzzer run of every fuzz target (scripts/fuzz.sh; FUZZ_SECONDS=N per target, default 30
 #      here, 60 when fuzz.sh runs alone).
 # Every stage runs even when an earlier one fails, so one run shows every failure; the exit code is
 # non-zero if any stage failed.
@@ -28,6 +29,7 @@ stage() {  # stage NAME COMMAND...: runs it, its output to the terminal and to $
 export CTEST_PARALLEL_LEVEL="${CTEST_PARALLEL_LEVEL:-$(nproc)}"
 stage release ctest --test-dir "$root/build" --output-on-failure --timeout 900
 stage sanitizers "$root/scripts/test-sanitizers.sh"
+stage tsan "$root/scripts/test-tsan.sh"
 stage fuzz "$root/scripts/fuzz.sh" "${FUZZ_SECONDS:-30}"  # 30 s per target here: the CI time budget
 
 # ctest's "N% tests passed, F tests failed out of T" and fuzz.sh's "fuzz: P passed, F failed".
@@ -37,10 +39,12 @@ ctest_counts() {  # summed over every ctest run of the stage (the sanitizer stag
 }
 read -r rp rf < <(ctest_counts release; echo "0 1")
 read -r ap af < <(ctest_counts sanitizers; echo "0 1")
+read -r tp tf < <(ctest_counts tsan; echo "0 1")
 read -r fp ff < <(sed -n 's/^fuzz: \([0-9]*\) passed, \([0-9]*\) failed.*/\1 \2/p' "$logs/fuzz"; echo "0 1")
-echo "Release: $rp passed, $rf failed; ASan+UBSan: $ap passed, $af failed; fuzz targets: $fp passed, $ff failed"
+echo "Release: $rp passed, $rf failed; ASan+UBSan: $ap passed, $af failed; TSan: $tp passed, $tf failed;" \
+    "fuzz targets: $fp passed, $ff failed"
 if [ ${#failed_stages[@]} -gt 0 ]; then
     echo "failed stages: ${failed_stages[*]}"
 fi
-echo "all: $((rp + ap + fp)) passed, $((rf + af + ff)) failed"
+echo "all: $((rp + ap + tp + fp)) passed, $((rf + af + tf + ff)) failed"
 [ ${#failed_stages[@]} -eq 0 ]

@@ -146,6 +146,8 @@ constexpr SettingInfo kSettings[] = {
      "simulated time of one step (1/60 s: 60 steps per second)", SIMCORE_MEMBER(&W::timeStep)},
     {"substeps", T::Int, G::World, {1, 64}, {}, "Substeps",
      "equal parts a step is split into; more is stiffer and more accurate", SIMCORE_MEMBER(&W::substeps)},
+    {"threads", T::Int, G::World, {0, 256}, {}, "Threads",
+     "threads the step runs on (0: one per core); results do not depend on it", SIMCORE_MEMBER(&W::threads)},
     {"integrator", T::Choice, G::Solver, kNone, kIntegratorNames, "Integrator",
      "which velocity moves positions in a substep (end, start or mean)", SIMCORE_MEMBER(&W::integrator),
      kIntegratorLabels},

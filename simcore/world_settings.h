@@ -121,6 +121,10 @@ struct WorldSettings {
     Vec3 gravity{0.0f, -9.81f, 0.0f};  // m/s^2
     float timeStep = 1.0f / 60.0f;     // s, one call to World::step
     int substeps = 4;                  // the step is split into this many equal substeps
+    // Threads the step's data-parallel stages run on, the caller's included; 0: one per core.
+    // Results are the same bits for any count. 1 (no worker threads) by default: 2 were no faster
+    // on the benchmark scenes on a 2-core machine (bench/results/README.md, "Threads").
+    int threads = 1;
     Integrator integrator = Integrator::SymplecticEuler;
     SolverSettings solver;
     ContactSettings contact;

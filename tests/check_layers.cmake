@@ -1,7 +1,8 @@
-# simcore's folders are its layers, lowest first: math, then the headers at the root (settings,
-# which every stage reads), shapes, collision, dynamics, world, io. A file may include its own layer
-# or a lower one, never a higher one. Run by ctest: cmake -DSOURCE_DIR=<repo> -P check_layers.cmake
-set(layers math . shapes collision dynamics world io)
+# simcore's folders are its layers, lowest first: math, parallel (the task pool, which knows no
+# physics), then the headers at the root (settings, which every stage reads), shapes, collision,
+# dynamics, world, io. A file may include its own layer or a lower one, never a higher one.
+# Run by ctest: cmake -DSOURCE_DIR=<repo> -P check_layers.cmake
+set(layers math parallel . shapes collision dynamics world io)
 function(layer_rank path out)  # path relative to simcore/
     string(FIND "${path}" "/" slash)
     if(slash EQUAL -1)

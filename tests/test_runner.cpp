@@ -90,6 +90,8 @@ void TestRunner::badArgumentsExitTwo_data() {
     QTest::newRow("steps not a number") << QStringList{"SCENE", "--steps", "ten"} << "--steps";
     QTest::newRow("negative dt") << QStringList{"SCENE", "--dt", "-0.01"} << "--dt";
     QTest::newRow("zero substeps") << QStringList{"SCENE", "--substeps", "0"} << "--substeps";
+    QTest::newRow("negative threads") << QStringList{"SCENE", "--threads", "-1"} << "--threads expects an integer in [0, 256]";
+    QTest::newRow("too many threads") << QStringList{"SCENE", "--threads", "257"} << "--threads expects an integer in [0, 256]";
     QTest::newRow("steps and seconds") << QStringList{"SCENE", "--steps", "1", "--seconds", "1"} << "exclude";
     QTest::newRow("missing value") << QStringList{"SCENE", "--steps"} << "needs a value";
     QTest::newRow("set without =") << QStringList{"SCENE", "--set", "gravity"} << "key.path=value";

@@ -44,7 +44,7 @@ std::optional<std::array<float, 3>> parseVector(const std::string& text) {
 
 std::string usageText() {
     std::string text = "usage: interplay-run SCENE.json [--steps N | --seconds T] [--dt S] [--substeps K]\n"
-           "                    [--iterations V] [--preset NAME] [--set key.path=value]...\n"
+           "                    [--iterations V] [--threads N] [--preset NAME] [--set key.path=value]...\n"
            "                    [--force NAME=[fx,fy,fz]]...\n"
            "                    [--trace FILE.csv] [--out FILE.json] [--save FILE.json]\n"
            "Runs a scene without a window and prints a JSON report on stdout.\n"
@@ -53,6 +53,8 @@ std::string usageText() {
            "  --dt S            time step in seconds (settings.timeStep)\n"
            "  --substeps K      substeps per step (settings.substeps)\n"
            "  --iterations V    velocity iterations (settings.solver.velocityIterations)\n"
+           "  --threads N       threads the step runs on, 0: one per core (settings.threads); the\n"
+           "                    results are the same for any N\n"
            "  --preset NAME     quality preset fast, balanced or accurate (settings.preset), applied\n"
            "                    before the scene's other settings options, which override it\n"
            "  --set key=value   any scene setting, e.g. --set effects.friction=false\n"
@@ -123,6 +125,13 @@ ParseResult parseArguments(const std::vector<std::string>& arguments) {
             if (!iterations || *iterations < 1)
                 return fail("--iterations expects an integer >= 1, got '" + value + "'");
             options.velocityIterations = iterations;
+        } else if (arg == "--threads") {
+            // The schema's range, so the option and the setting accept the same counts.
+            const simcore::NumberRange& range = simcore::findSetting("threads")->range;
+            const auto threads = parseNumber<int>(value);
+            if (!threads || !range.contains(*threads))
+                return fail("--threads expects an integer in " + range.describe() + " (0: one per core), got '" + value + "'");
+            options.settingOverrides.push_back("threads=" + std::to_string(*threads));
         } else if (arg == "--preset") {
             if (!simcore::parseQualityPreset(value))
                 return fail("--preset expects fast, balanced or accurate, got '" + value + "'");

@@ -26,7 +26,7 @@ struct RunnerOptions {
     std::optional<int> velocityIterations;   // --iterations
     // --set key.path=value, in order. --preset NAME comes first as preset=NAME, followed by --dt,
     // --substeps and --iterations as overrides (their fields above are then unset), so that every
-    // explicit option overrides the preset.
+    // explicit option overrides the preset. --threads N travels as threads=N, in its place among them.
     std::vector<std::string> settingOverrides;
     std::vector<ForceOption> forces;            // --force NAME=[fx,fy,fz], in order
     std::string tracePath;                   // --trace FILE.csv

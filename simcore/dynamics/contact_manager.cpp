@@ -8,6 +8,9 @@ namespace simcore {
 
 namespace {
 
+// Contacts per chunk of the parallel narrow phase: enough shape tests to outweigh handing a chunk out.
+constexpr std::size_t kNarrowPhaseGrain = 64;
+
 // Points closer than this to last step's point (m) are taken to be the same contact.
 constexpr float kPersistenceDistance = 0.01f;
 
@@ -57,6 +60,46 @@ void combineMaterials(Contact& contact, const BodyStorage& bodies, std::size_t a
                                                     bodies.rollingResistance[b], rollingRadius(bodies.shape[b]));
 }
 
+// The narrow phase for one contact; false when its bodies' fat boxes no longer overlap and it is to go.
+bool refreshManifold(Contact& contact, const BodyStorage& bodies, const BroadPhase& broadPhase, float speculativeDistance,
+                     float timeStep) {
+    auto isAwakeDynamic = [&bodies](std::size_t i) {
+        return bodies.motion[i] == MotionType::Dynamic && bodies.awake[i];
+    };
+    const std::size_t a = bodies.denseIndexOfSlot(contact.slotA);
+    const std::size_t b = bodies.denseIndexOfSlot(contact.slotB);
+    if (!isAwakeDynamic(a) && !isAwakeDynamic(b)) return true;  // a sleeping pair keeps its manifold, ready for when it wakes
+    if (!broadPhase.testOverlap(bodies.proxy[a], bodies.proxy[b])) return false;
+
+    // Speculative margin: how far the surfaces can approach within the step (relative linear
+    // speed plus each body's spin times its reach), so a fast impact is met at contact rather
+    // than discovered a step later deep inside, where pushing out adds energy.
+    const float approachSpeed =
+        glm::length(bodies.linearVelocity[b] - bodies.linearVelocity[a]) +
+        glm::length(bodies.angularVelocity[a]) * glm::length(bodies.bounds[a].halfExtents()) +
+        glm::length(bodies.angularVelocity[b]) * glm::length(bodies.bounds[b].halfExtents());
+    const float margin = speculativeDistance + timeStep * approachSpeed;
+
+    // Fat boxes overlap long before shapes touch: when even the tight boxes, grown by the
+    // margin, are apart, the pair has no points and the shape test is skipped.
+    Aabb reach = bodies.bounds[a];
+    reach.min -= Vec3(margin);
+    reach.max += Vec3(margin);
+    if (!reach.overlaps(bodies.bounds[b])) {
+        contact.manifold.pointCount = 0;
+        contact.impulses = {};
+        contact.frictionImpulse = {};
+        return true;
+    }
+
+    ContactManifold manifold;
+    collideShapes(bodies.shape[a], bodies.transform(a), bodies.shape[b], bodies.transform(b), margin, manifold);
+
+    contact.impulses = matchImpulses(contact.manifold, contact.impulses, manifold);
+    contact.manifold = manifold;
+    return true;
+}
+
 }  // namespace
 
 float combineFriction(float a, float b) { return std::sqrt(a * b); }
@@ -100,51 +143,24 @@ std::size_t ContactManager::addPairs(const std::vector<BodyPair>& pairs, const B
 }
 
 void ContactManager::updateManifolds(const BodyStorage& bodies, const BroadPhase& broadPhase,
-                                     float speculativeDistance, float timeStep) {
-    auto isAwakeDynamic = [&bodies](std::size_t i) {
-        return bodies.motion[i] == MotionType::Dynamic && bodies.awake[i];
-    };
+                                     float speculativeDistance, float timeStep, TaskPool& pool) {
+    // Each contact's update reads the bodies and writes only that contact, so the contacts are
+    // refreshed in parallel and the separated ones removed after, in the order a single pass
+    // would remove them (removal moves the last contact into the gap: the order is part of the
+    // state).
+    separated_.resize(contacts_.size());
+    pool.parallelFor(contacts_.size(), kNarrowPhaseGrain, [&](std::size_t, std::size_t begin, std::size_t end) {
+        for (std::size_t c = begin; c < end; ++c)
+            separated_[c] = !refreshManifold(contacts_[c], bodies, broadPhase, speculativeDistance, timeStep);
+    });
     for (std::size_t c = 0; c < contacts_.size();) {
-        Contact& contact = contacts_[c];
-        const std::size_t a = bodies.denseIndexOfSlot(contact.slotA);
-        const std::size_t b = bodies.denseIndexOfSlot(contact.slotB);
-        if (!isAwakeDynamic(a) && !isAwakeDynamic(b)) {
-            ++c;  // a sleeping pair keeps its manifold, ready for when it wakes
-            continue;
-        }
-        if (!broadPhase.testOverlap(bodies.proxy[a], bodies.proxy[b])) {
-            removeAt(c);  // the last contact moved into slot c: visit it next
-            continue;
-        }
-
-        // Speculative margin: how far the surfaces can approach within the step (relative linear
-        // speed plus each body's spin times its reach), so a fast impact is met at contact rather
-        // than discovered a step later deep inside, where pushing out adds energy.
-        const float approachSpeed =
-            glm::length(bodies.linearVelocity[b] - bodies.linearVelocity[a]) +
-            glm::length(bodies.angularVelocity[a]) * glm::length(bodies.bounds[a].halfExtents()) +
-            glm::length(bodies.angularVelocity[b]) * glm::length(bodies.bounds[b].halfExtents());
-        const float margin = speculativeDistance + timeStep * approachSpeed;
-
-        // Fat boxes overlap long before shapes touch: when even the tight boxes, grown by the
-        // margin, are apart, the pair has no points and the shape test is skipped.
-        Aabb reach = bodies.bounds[a];
-        reach.min -= Vec3(margin);
-        reach.max += Vec3(margin);
-        if (!reach.overlaps(bodies.bounds[b])) {
-            contact.manifold.pointCount = 0;
-            contact.impulses = {};
-            contact.frictionImpulse = {};
+        if (!separated_[c]) {
             ++c;
             continue;
         }
-
-        ContactManifold manifold;
-        collideShapes(bodies.shape[a], bodies.transform(a), bodies.shape[b], bodies.transform(b), margin, manifold);
-
-        contact.impulses = matchImpulses(contact.manifold, contact.impulses, manifold);
-        contact.manifold = manifold;
-        ++c;
+        separated_[c] = separated_.back();  // removeAt moves the last contact into slot c: visit it next
+        separated_.pop_back();
+        removeAt(c);
     }
 }
 

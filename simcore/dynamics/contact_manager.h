@@ -8,6 +8,7 @@
 #include "simcore/collision/contact_manifold.h"
 #include "simcore/collision/pair_table.h"
 #include "simcore/dynamics/body_storage.h"
+#include "simcore/parallel/task_pool.h"
 
 #include <array>
 #include <cstdint>
@@ -60,8 +61,9 @@ public:
     // Narrow phase: refreshes the manifold of every contact with an awake dynamic body, and
     // destroys contacts whose bodies' fat bounds no longer overlap. Points are kept while their
     // separation is within speculativeDistance plus how far the bodies can approach in timeStep.
+    // Contacts are refreshed on the pool's threads; the result does not depend on their number.
     void updateManifolds(const BodyStorage& bodies, const BroadPhase& broadPhase, float speculativeDistance,
-                         float timeStep);
+                         float timeStep, TaskPool& pool);
 
     void removeContactsOf(std::uint32_t slot);
     // Recombines friction, restitution and rolling resistance of the contacts of one body slot after
@@ -81,6 +83,7 @@ private:
     std::vector<Contact> contacts_;
     PairTable pairToContact_;
     std::vector<std::uint32_t> contactsOfSlot_;  // by body slot: contacts with other dynamic bodies
+    std::vector<std::uint8_t> separated_;        // scratch, by contact: to remove after the narrow phase
 };
 
 }  // namespace simcore

@@ -14,6 +14,11 @@ using simd::MaskW;
 using simd::SymMat3W;
 using simd::Vec3W;
 
+// Batches per chunk of a colour run in parallel: a batch costs a few hundred nanoseconds, so a
+// handful outweighs handing the chunk to a thread, and a colour of pyramid10 (some 20 batches)
+// still splits.
+constexpr std::size_t kBatchGrain = 4;
+
 // Friction tangents for a manifold with friction centre `centre`. While the bodies slip there, the
 // first tangent follows the slip: with axes at an angle to it, the clamped friction pointed off the
 // slip direction and came out weak (3.6 % on a box sliding down a 30-degree incline, with the rows
@@ -84,14 +89,14 @@ SIMCORE_SIMD_INLINE WideBodies gatherVelocities(const float* rows, const std::in
     return {{a[0], a[1], a[2]}, {a[4], a[5], a[6]}, {b[0], b[1], b[2]}, {b[4], b[5], b[6]}};
 }
 
-SIMCORE_SIMD_INLINE void scatterVelocities(float* rows, const std::int32_t* bodyA, const std::int32_t* bodyB, const WideBodies& v) {
+// storeA and storeB: the batch's rows to write (ManifoldBatch::storeA), not the bodies' own.
+SIMCORE_SIMD_INLINE void scatterVelocities(float* rows, const std::int32_t* storeA, const std::int32_t* storeB, const WideBodies& v) {
     const FloatW zero = FloatW::zero();
     const FloatW a[8] = {v.linearA.x, v.linearA.y, v.linearA.z, zero, v.angularA.x, v.angularA.y, v.angularA.z, zero};
     const FloatW b[8] = {v.linearB.x, v.linearB.y, v.linearB.z, zero, v.angularB.x, v.angularB.y, v.angularB.z, zero};
-    // A immovable or non-moving body may sit in several lanes; its velocity is unchanged in each,
-    // so the repeated stores agree.
-    simd::scatterRows(rows, bodyA, a);
-    simd::scatterRows(rows, bodyB, b);
+    // The lanes of non-moving bodies (whose velocities are unchanged) all go to one scratch row.
+    simd::scatterRows(rows, storeA, a);
+    simd::scatterRows(rows, storeB, b);
 }
 
 // (R - I) for the rotation of a unit quaternion (x, y, z, w): how a body's anchors moved.
@@ -279,8 +284,10 @@ std::int32_t ContactSolver::solverBody(std::size_t denseIndex, const BodyStorage
     return index;
 }
 
-void ContactSolver::prepare(const std::vector<Contact>& contacts, const BodyStorage& bodies, const Params& params) {
+void ContactSolver::prepare(const std::vector<Contact>& contacts, const BodyStorage& bodies, const Params& params,
+                            TaskPool& pool) {
     params_ = params;
+    pool_ = &pool;
     maxPenetration_ = 0.0f;
     usesFriction_ = false;
     usesRestitution_ = false;
@@ -298,8 +305,6 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const BodyStor
     // Colour greedily in contact order (deterministic): the lowest colour free at both moving
     // bodies. Immovable bodies are only read, so any number of lanes may share them. A manifold
     // that finds no free colour goes to the overflow, solved one manifold per batch.
-    constexpr int kColorCount = 64;
-    constexpr int kOverflow = kColorCount;
     std::array<std::uint32_t, kColorCount + 1> perColor{};
     order_.clear();
     colorOf_.clear();
@@ -327,23 +332,31 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const BodyStor
     constraintCount_ = order_.size();
 
     // Batches colour by colour; a colour's manifolds fill lanes in contact order.
-    std::array<std::uint32_t, kColorCount + 1> firstBatch{}, filled{};
+    std::array<std::uint32_t, kColorCount + 1> filled{};
     std::uint32_t batchCount = 0;
     colorCount_ = 0;
     for (int color = 0; color <= kColorCount; ++color) {
-        firstBatch[color] = batchCount;
+        colorFirstBatch_[color] = batchCount;
         const std::uint32_t lanes = color == kOverflow ? 1 : kLanes;
         batchCount += (perColor[color] + lanes - 1) / lanes;
         if (perColor[color] > 0) ++colorCount_;
     }
+    colorFirstBatch_[kOverflow + 1] = batchCount;
     batches_.assign(batchCount, ManifoldBatch{});
+    // Every lane writes back to its batch's scratch row (after the solver bodies' rows) unless it
+    // has a moving body, set below.
+    for (std::size_t k = 0; k < batches_.size(); ++k) {
+        const auto scratchRow = static_cast<std::int32_t>(references_.size() + k);
+        std::fill(std::begin(batches_[k].storeA), std::end(batches_[k].storeA), scratchRow);
+        std::fill(std::begin(batches_[k].storeB), std::end(batches_[k].storeB), scratchRow);
+    }
 
     for (std::size_t k = 0; k < order_.size(); ++k) {
         const std::uint32_t ci = order_[k];
         const int color = colorOf_[k];
         const std::uint32_t lanes = color == kOverflow ? 1 : kLanes;
         const std::uint32_t slot = filled[color]++;
-        ManifoldBatch& batch = batches_[firstBatch[color] + slot / lanes];
+        ManifoldBatch& batch = batches_[colorFirstBatch_[color] + slot / lanes];
         const int lane = static_cast<int>(slot % lanes);
 
         const Contact& contact = contacts[ci];
@@ -354,6 +367,8 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const BodyStor
         const bool movesB = bodies.motion[b] == MotionType::Dynamic && bodies.awake[b];
         batch.bodyA[lane] = solverBody(a, bodies);
         batch.bodyB[lane] = solverBody(b, bodies);
+        if (movesA) batch.storeA[lane] = batch.bodyA[lane];
+        if (movesB) batch.storeB[lane] = batch.bodyB[lane];
         batch.contactIndex[lane] = ci;
         batch.pointCount[lane] = static_cast<std::uint8_t>(manifold.pointCount);
         batch.maxPointCount = std::max(batch.maxPointCount, batch.pointCount[lane]);
@@ -422,44 +437,49 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const BodyStor
         }
     }
 
-    // Effective masses, a batch at a time; zero for the rows of absent points and of frictionless
-    // lanes, so those rows do nothing.
-    const FloatW zero = FloatW::zero(), one = FloatW::splat(1.0f), tiny = FloatW::splat(1e-30f);
-    for (ManifoldBatch& c : batches_) {
-        const FloatW inverseMassSum = c.inverseMassA + c.inverseMassB;
-        const SymMat3W inverseInertiaA = load(c.inverseInertiaA), inverseInertiaB = load(c.inverseInertiaB);
-        const Vec3W normal = load(c.normal), tangent1 = load(c.tangent1), tangent2 = load(c.tangent2);
-        FloatW pointCount = zero;
-        for (int lane = 0; lane < kLanes; ++lane) pointCount.setLane(lane, c.pointCount[lane]);
-        for (int i = 0; i < c.maxPointCount; ++i) {
-            PointBatch& p = c.points[i];
-            const MaskW exists = pointCount > FloatW::splat(static_cast<float>(i));
-            p.normalMass = select(exists, effectiveMass(inverseMassSum, inverseInertiaA, inverseInertiaB, load(p.anchorA),
-                                                        load(p.anchorB), normal),
-                                  zero);
-        }
-        if (!c.anyFriction) continue;
-        const MaskW hasFriction = c.friction > zero;
-        const Vec3W centerA = load(c.centerA), centerB = load(c.centerB);
-        const Vec3W a1 = cross(centerA, tangent1), a2 = cross(centerA, tangent2);
-        const Vec3W b1 = cross(centerB, tangent1), b2 = cross(centerB, tangent2);
-        const Vec3W ia1 = inverseInertiaA * a1, ib1 = inverseInertiaB * b1;
-        const FloatW k11 = inverseMassSum + dot(a1, ia1) + dot(b1, ib1);
-        const FloatW k22 = inverseMassSum + dot(a2, inverseInertiaA * a2) + dot(b2, inverseInertiaB * b2);
-        const FloatW k12 = dot(a2, ia1) + dot(b2, ib1);
-        const FloatW determinant = k11 * k22 - k12 * k12;
-        const MaskW invertible = hasFriction & (determinant > zero);
-        const FloatW inverseDeterminant = one / simd::max(determinant, tiny);
-        c.tangentMass[0] = select(invertible, k22 * inverseDeterminant, zero);
-        c.tangentMass[1] = select(invertible, k11 * inverseDeterminant, zero);
-        c.tangentMass[2] = select(invertible, -(k12 * inverseDeterminant), zero);
-        const FloatW kTwist = dot(normal, inverseInertiaA * normal) + dot(normal, inverseInertiaB * normal);
-        c.twistMass = select(hasFriction & (kTwist > zero), one / simd::max(kTwist, tiny), zero);
-    }
+    // Effective masses, a batch at a time (each on its own: in parallel).
+    pool.parallelFor(batches_.size(), kBatchGrain, [this](std::size_t, std::size_t begin, std::size_t end) {
+        for (std::size_t k = begin; k < end; ++k) computeEffectiveMasses(batches_[k]);
+    });
 
-    velocities_.assign(references_.size(), BodyRow{});
+    velocities_.assign(references_.size() + batches_.size(), BodyRow{});
     motion_.assign(references_.size(), BodyRow{});
     motion_[0].value[7] = 1.0f;  // the immovable body's rotation: identity
+}
+
+// A batch's effective masses; zero for the rows of absent points and of frictionless lanes, so those
+// rows do nothing.
+void ContactSolver::computeEffectiveMasses(ManifoldBatch& c) {
+    const FloatW zero = FloatW::zero(), one = FloatW::splat(1.0f), tiny = FloatW::splat(1e-30f);
+    const FloatW inverseMassSum = c.inverseMassA + c.inverseMassB;
+    const SymMat3W inverseInertiaA = load(c.inverseInertiaA), inverseInertiaB = load(c.inverseInertiaB);
+    const Vec3W normal = load(c.normal), tangent1 = load(c.tangent1), tangent2 = load(c.tangent2);
+    FloatW pointCount = zero;
+    for (int lane = 0; lane < kLanes; ++lane) pointCount.setLane(lane, c.pointCount[lane]);
+    for (int i = 0; i < c.maxPointCount; ++i) {
+        PointBatch& p = c.points[i];
+        const MaskW exists = pointCount > FloatW::splat(static_cast<float>(i));
+        p.normalMass = select(exists, effectiveMass(inverseMassSum, inverseInertiaA, inverseInertiaB, load(p.anchorA),
+                                                    load(p.anchorB), normal),
+                              zero);
+    }
+    if (!c.anyFriction) return;
+    const MaskW hasFriction = c.friction > zero;
+    const Vec3W centerA = load(c.centerA), centerB = load(c.centerB);
+    const Vec3W a1 = cross(centerA, tangent1), a2 = cross(centerA, tangent2);
+    const Vec3W b1 = cross(centerB, tangent1), b2 = cross(centerB, tangent2);
+    const Vec3W ia1 = inverseInertiaA * a1, ib1 = inverseInertiaB * b1;
+    const FloatW k11 = inverseMassSum + dot(a1, ia1) + dot(b1, ib1);
+    const FloatW k22 = inverseMassSum + dot(a2, inverseInertiaA * a2) + dot(b2, inverseInertiaB * b2);
+    const FloatW k12 = dot(a2, ia1) + dot(b2, ib1);
+    const FloatW determinant = k11 * k22 - k12 * k12;
+    const MaskW invertible = hasFriction & (determinant > zero);
+    const FloatW inverseDeterminant = one / simd::max(determinant, tiny);
+    c.tangentMass[0] = select(invertible, k22 * inverseDeterminant, zero);
+    c.tangentMass[1] = select(invertible, k11 * inverseDeterminant, zero);
+    c.tangentMass[2] = select(invertible, -(k12 * inverseDeterminant), zero);
+    const FloatW kTwist = dot(normal, inverseInertiaA * normal) + dot(normal, inverseInertiaB * normal);
+    c.twistMass = select(hasFriction & (kTwist > zero), one / simd::max(kTwist, tiny), zero);
 }
 
 void ContactSolver::loadVelocities(const BodyStorage& bodies) {
@@ -490,10 +510,30 @@ void ContactSolver::storeVelocities(BodyStorage& bodies) const {
     }
 }
 
+template <class SolveBatch>
+bool ContactSolver::forEachBatch(SolveBatch&& solveBatch) {
+    bool any = false;
+    for (int color = 0; color < kOverflow; ++color) {
+        const std::size_t first = colorFirstBatch_[color];
+        const std::size_t hits = pool_->parallelSum(colorFirstBatch_[color + 1] - first, kBatchGrain,
+                                                    [&](std::size_t begin, std::size_t end) {
+                                                        std::uint64_t count = 0;
+                                                        for (std::size_t k = first + begin; k < first + end; ++k)
+                                                            if (solveBatch(batches_[k])) ++count;
+                                                        return count;
+                                                    });
+        any = any || hits > 0;
+    }
+    // The overflow's batches may share moving bodies: one after another.
+    for (std::size_t k = colorFirstBatch_[kOverflow]; k < colorFirstBatch_[kOverflow + 1]; ++k)
+        if (solveBatch(batches_[k])) any = true;
+    return any;
+}
+
 void ContactSolver::warmStart(BodyStorage& bodies) {
     loadVelocities(bodies);
     float* rows = velocities_.data()->value;
-    for (const ManifoldBatch& c : batches_) {
+    forEachBatch([&](const ManifoldBatch& c) {
         WideBodies v = gatherVelocities(rows, c.bodyA, c.bodyB);
         const FrictionRowsW f = frictionRows(c);
         for (int i = 0; i < c.maxPointCount; ++i) {
@@ -504,8 +544,9 @@ void ContactSolver::warmStart(BodyStorage& bodies) {
         }
         if (c.anyRolling) applyAngularImpulse(v, load(c.rollingImpulse), f.inverseInertiaA, f.inverseInertiaB);
         if (c.anyFriction) applyFriction(v, f, c.tangentImpulse1, c.tangentImpulse2, c.twistImpulse);
-        scatterVelocities(rows, c.bodyA, c.bodyB, v);
-    }
+        scatterVelocities(rows, c.storeA, c.storeB, v);
+        return false;
+    });
     storeVelocities(bodies);
 }
 
@@ -537,10 +578,12 @@ bool ContactSolver::solve(BodyStorage& bodies, bool useBias) {
 
     const FloatW settleTolerance = FloatW::splat(kRelaxTolerance);
     const FloatW deepOverlap = FloatW::splat(-params_.contact.linearSlop);
-    FloatW largestExcess = FloatW::splat(-1.0f);
     float* rows = velocities_.data()->value;
     const float* motion = motion_.data()->value;
-    for (ManifoldBatch& c : batches_) {
+    // Whether any batch still pushes; each batch's largest excess starts afresh (the maximum over
+    // all of them is above zero exactly when one batch's is).
+    const bool pushLeft = forEachBatch([&](ManifoldBatch& c) {
+        FloatW largestExcess = FloatW::splat(-1.0f);
         WideBodies v = gatherVelocities(rows, c.bodyA, c.bodyB);
         const WideBodies before = v;
         const Vec3W normal = load(c.normal);
@@ -604,10 +647,11 @@ bool ContactSolver::solve(BodyStorage& bodies, bool useBias) {
             c.twistImpulse = select(kept, c.twistImpulse, zero);
             for (FloatW& rolling : c.rollingImpulse) rolling = select(kept, rolling, zero);
         }
-        scatterVelocities(rows, c.bodyA, c.bodyB, v);
-    }
+        scatterVelocities(rows, c.storeA, c.storeB, v);
+        return simd::any(largestExcess > zero);
+    });
     storeVelocities(bodies);
-    return simd::any(largestExcess > zero);
+    return pushLeft;
 }
 
 void ContactSolver::currentInverseInertia(const std::int32_t (&solverBodies)[kLanes], const BodyStorage& bodies,
@@ -634,9 +678,8 @@ void ContactSolver::resolveCollisions(BodyStorage& bodies, ImpactTiming timing) 
     float* rows = velocities_.data()->value;
     const float* motion = motion_.data()->value;
     for (int pass = 0; pass < kMaxCollisionPasses; ++pass) {
-        bool collided = false;
-        for (ManifoldBatch& c : batches_) {
-            if (!c.anyRestitution) continue;
+        const bool collided = forEachBatch([&](ManifoldBatch& c) {
+            if (!c.anyRestitution) return false;
             WideBodies v = gatherVelocities(rows, c.bodyA, c.bodyB);
             const WideBodies before = v;
             const PairMotionW pairMotion = gatherMotion(motion, c.bodyA, c.bodyB);
@@ -672,8 +715,7 @@ void ContactSolver::resolveCollisions(BodyStorage& bodies, ImpactTiming timing) 
                 centreB = mulAdd(anchorB, weight, centreB);
             }
             const MaskW any = count > zero;
-            if (!simd::any(any)) continue;
-            collided = true;
+            if (!simd::any(any)) return false;
             const FloatW inverseCount = one / simd::max(count, one);
             centreA = centreA * inverseCount;
             centreB = centreB * inverseCount;
@@ -695,8 +737,9 @@ void ContactSolver::resolveCollisions(BodyStorage& bodies, ImpactTiming timing) 
                               c.friction * normalImpulse * reach * inverseCount);
             }
             keepFiniteLanes(v, before);
-            scatterVelocities(rows, c.bodyA, c.bodyB, v);
-        }
+            scatterVelocities(rows, c.storeA, c.storeB, v);
+            return true;
+        });
         if (!collided) break;
     }
     storeVelocities(bodies);

@@ -23,13 +23,18 @@
 // and packs each colour into batches of simd::kWidth manifolds, one per lane, in structure-of-
 // arrays form. A batch is solved in one pass of wide arithmetic; colours run one after another,
 // which is Gauss-Seidel between colours and exact within one (its lanes touch disjoint bodies).
+// The batches of one colour touch disjoint moving bodies too, so they run on the pool's threads;
+// each writes back only its moving bodies' velocities (a static or sleeping body, which any number
+// of batches share, is only read), so the result is the same for any thread count.
 
 #include "simcore/dynamics/contact_manager.h"
 #include "simcore/dynamics/body_storage.h"
 #include "simcore/dynamics/constraint_math.h"
 #include "simcore/math/simd.h"
+#include "simcore/parallel/task_pool.h"
 #include "simcore/world_settings.h"
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -47,8 +52,8 @@ public:
     };
 
     // Builds constraints for touching contacts with an awake dynamic body. Sleeping and static
-    // bodies take part with infinite mass.
-    void prepare(const std::vector<Contact>& contacts, const BodyStorage& bodies, const Params& params);
+    // bodies take part with infinite mass. The passes until the next prepare run on `pool`.
+    void prepare(const std::vector<Contact>& contacts, const BodyStorage& bodies, const Params& params, TaskPool& pool);
     void warmStart(BodyStorage& bodies);
     // Returns whether some normal row still changed a relative velocity by more than
     // kRelaxTolerance: in a relax pass, push velocity is still being taken out.
@@ -78,6 +83,10 @@ private:
     // Collision passes per substep at most: enough for an impact to cross a row of this many
     // touching bodies in the worst solve order. Most substeps stop after the first pass.
     static constexpr int kMaxCollisionPasses = 8;
+    // Colours at most; a manifold that finds none free goes to the overflow, one manifold per batch,
+    // whose batches may share bodies and so run one after another.
+    static constexpr int kColorCount = 64;
+    static constexpr int kOverflow = kColorCount;
 
     // One contact point in every lane: anchors relative to each centre of mass at prepare (world
     // axes), the normal row's effective mass and accumulated impulse.
@@ -90,6 +99,9 @@ private:
     // kLanes manifolds. Unused lanes and points have zero masses and so change nothing.
     struct ManifoldBatch {
         std::int32_t bodyA[kLanes], bodyB[kLanes];  // solver body indices (0: the immovable body)
+        // The rows the pass writes back to: the body's own where it moves, else this batch's scratch
+        // row, so that batches running side by side never write a row another one reads.
+        std::int32_t storeA[kLanes], storeB[kLanes];
         FloatW inverseMassA, inverseMassB;
         FloatW inverseInertiaA[6], inverseInertiaB[6];  // world, at prepare: xx yy zz xy xz yz
         FloatW normal[3], tangent1[3], tangent2[3];     // normal from A to B
@@ -133,13 +145,20 @@ private:
     };
 
     std::int32_t solverBody(std::size_t denseIndex, const BodyStorage& bodies);
+    static void computeEffectiveMasses(ManifoldBatch& batch);
     void loadVelocities(const BodyStorage& bodies);
     void loadMotion(const BodyStorage& bodies);
     void storeVelocities(BodyStorage& bodies) const;
     void currentInverseInertia(const std::int32_t (&solverBodies)[kLanes], const BodyStorage& bodies,
                                FloatW (&inverseInertia)[6]) const;
+    // solveBatch(batch) for every batch, colour by colour in order; the batches of a colour on the
+    // pool's threads, the overflow's on this one. Returns whether solveBatch returned true for any.
+    template <class SolveBatch>
+    bool forEachBatch(SolveBatch&& solveBatch);
 
     std::vector<ManifoldBatch> batches_;       // colour by colour
+    std::array<std::uint32_t, kColorCount + 2> colorFirstBatch_{};  // colour c: [first[c], first[c + 1])
+    TaskPool* pool_ = nullptr;                 // prepare's
     std::vector<BodyRow> velocities_, motion_;  // by solver body
     std::vector<BodyReference> references_;    // by solver body; entry 0 is the immovable body
     std::vector<std::int32_t> denseToSolver_;  // scratch: -1 where a body has no solver entry

@@ -77,38 +77,51 @@ Vec3 solveGyroscopic(const Quat& orientation, const Mat3& bodyInertia, const Vec
     return worldOmega + orientation * Vec3(w1 - w0);
 }
 
+// Bodies per chunk of a parallel integration: each costs tens of nanoseconds, so a chunk must hold
+// many to outweigh handing it to a thread.
+constexpr std::size_t kBodyGrain = 256;
+
 }  // namespace
 
 std::uint32_t BodyIntegrator::integrateVelocities(BodyStorage& bodies, Integrator method, const VelocityIntegration& params,
-                                                  float dt) {
-    std::uint32_t bounded = 0;
+                                                  float dt, TaskPool& pool) {
     const std::size_t n = bodies.size();
     const bool keepStart = method != Integrator::SymplecticEuler;
     if (keepStart) {
         startLinear_.resize(n);
         startAngular_.resize(n);
     }
-    for (std::size_t i = 0; i < n; ++i) {
-        const bool moves = bodies.motion[i] == MotionType::Dynamic && bodies.awake[i];
-        // The relax passes of the substep before may have left a torn assembly beyond the bound.
-        if (moves && boundVelocity(bodies.linearVelocity[i], bodies.angularVelocity[i], dt)) ++bounded;
-        if (keepStart) {
-            // Kinematic bodies too: their start velocity is their only velocity.
-            startLinear_[i] = bodies.linearVelocity[i];
-            startAngular_[i] = bodies.angularVelocity[i];
+    // Every body's update reads and writes only its own entries.
+    return static_cast<std::uint32_t>(pool.parallelSum(n, kBodyGrain, [&](std::size_t begin, std::size_t end) {
+        std::uint32_t bounded = 0;
+        for (std::size_t i = begin; i < end; ++i) {
+            if (integrateVelocity(bodies, i, keepStart, params, dt)) ++bounded;
         }
-        if (!moves) continue;
+        return bounded;
+    }));
+}
 
-        Vec3 v = bodies.linearVelocity[i];
-        Vec3 w = bodies.angularVelocity[i];
-        v += dt * (params.gravity + bodies.inverseMass[i] * bodies.force[i]);
-
-        w += dt * (bodies.inverseInertiaWorld[i] * bodies.torque[i]);
-        if (params.gyroscopic) w = solveGyroscopic(bodies.orientation[i], bodies.inertiaLocal[i], w, dt);
-
-        bodies.linearVelocity[i] = v * params.linearRetention;
-        bodies.angularVelocity[i] = w * params.angularRetention;
+bool BodyIntegrator::integrateVelocity(BodyStorage& bodies, std::size_t i, bool keepStart, const VelocityIntegration& params,
+                                       float dt) {
+    const bool moves = bodies.motion[i] == MotionType::Dynamic && bodies.awake[i];
+    // The relax passes of the substep before may have left a torn assembly beyond the bound.
+    const bool bounded = moves && boundVelocity(bodies.linearVelocity[i], bodies.angularVelocity[i], dt);
+    if (keepStart) {
+        // Kinematic bodies too: their start velocity is their only velocity.
+        startLinear_[i] = bodies.linearVelocity[i];
+        startAngular_[i] = bodies.angularVelocity[i];
     }
+    if (!moves) return bounded;
+
+    Vec3 v = bodies.linearVelocity[i];
+    Vec3 w = bodies.angularVelocity[i];
+    v += dt * (params.gravity + bodies.inverseMass[i] * bodies.force[i]);
+
+    w += dt * (bodies.inverseInertiaWorld[i] * bodies.torque[i]);
+    if (params.gyroscopic) w = solveGyroscopic(bodies.orientation[i], bodies.inertiaLocal[i], w, dt);
+
+    bodies.linearVelocity[i] = v * params.linearRetention;
+    bodies.angularVelocity[i] = w * params.angularRetention;
     return bounded;
 }
 
@@ -121,32 +134,39 @@ std::uint32_t BodyIntegrator::boundVelocities(BodyStorage& bodies, float dt) con
     return bounded;
 }
 
-std::uint32_t BodyIntegrator::integratePositions(BodyStorage& bodies, Integrator method, float dt) const {
-    std::uint32_t bounded = 0;
-    const std::size_t n = bodies.size();
-    for (std::size_t i = 0; i < n; ++i) {
-        if (bodies.motion[i] == MotionType::Static || !bodies.awake[i]) continue;
-
-        if (bodies.motion[i] == MotionType::Dynamic && boundVelocity(bodies.linearVelocity[i], bodies.angularVelocity[i], dt))
-            ++bounded;
-        Vec3 v = bodies.linearVelocity[i];
-        Vec3 w = bodies.angularVelocity[i];
-        if (method == Integrator::ExplicitEuler) {
-            v = startLinear_[i];
-            w = startAngular_[i];
-        } else if (method == Integrator::VelocityVerlet) {
-            v = 0.5f * (v + startLinear_[i]);
-            w = 0.5f * (w + startAngular_[i]);
+std::uint32_t BodyIntegrator::integratePositions(BodyStorage& bodies, Integrator method, float dt, TaskPool& pool) const {
+    // Every body's update reads and writes only its own entries.
+    return static_cast<std::uint32_t>(pool.parallelSum(bodies.size(), kBodyGrain, [&](std::size_t begin, std::size_t end) {
+        std::uint32_t bounded = 0;
+        for (std::size_t i = begin; i < end; ++i) {
+            if (integratePosition(bodies, i, method, dt)) ++bounded;
         }
-        bodies.centerOfMass[i] += dt * v;
+        return bounded;
+    }));
+}
 
-        // dq/dt = 1/2 (0, w) q; the first-order update is renormalised so |q| = 1 holds to
-        // rounding at every step, however long the run.
-        Quat& q = bodies.orientation[i];
-        const Quat spin(0.0f, w.x, w.y, w.z);
-        q = glm::normalize(q + (0.5f * dt) * (spin * q));
-        bodies.refreshInverseInertiaWorld(i);
+bool BodyIntegrator::integratePosition(BodyStorage& bodies, std::size_t i, Integrator method, float dt) const {
+    if (bodies.motion[i] == MotionType::Static || !bodies.awake[i]) return false;
+
+    const bool bounded =
+        bodies.motion[i] == MotionType::Dynamic && boundVelocity(bodies.linearVelocity[i], bodies.angularVelocity[i], dt);
+    Vec3 v = bodies.linearVelocity[i];
+    Vec3 w = bodies.angularVelocity[i];
+    if (method == Integrator::ExplicitEuler) {
+        v = startLinear_[i];
+        w = startAngular_[i];
+    } else if (method == Integrator::VelocityVerlet) {
+        v = 0.5f * (v + startLinear_[i]);
+        w = 0.5f * (w + startAngular_[i]);
     }
+    bodies.centerOfMass[i] += dt * v;
+
+    // dq/dt = 1/2 (0, w) q; the first-order update is renormalised so |q| = 1 holds to
+    // rounding at every step, however long the run.
+    Quat& q = bodies.orientation[i];
+    const Quat spin(0.0f, w.x, w.y, w.z);
+    q = glm::normalize(q + (0.5f * dt) * (spin * q));
+    bodies.refreshInverseInertiaWorld(i);
     return bounded;
 }
 

@@ -4,6 +4,7 @@
 // awake dynamic bodies move under forces; kinematic bodies move by their velocity.
 
 #include "simcore/dynamics/body_storage.h"
+#include "simcore/parallel/task_pool.h"
 #include "simcore/world_settings.h"
 
 #include <cstdint>
@@ -26,14 +27,20 @@ public:
     //
     // Updates velocities; the integrators that move by the start-of-substep velocity keep a copy.
     // Applied forces and torques act in every substep; the world clears them when the step ends.
-    std::uint32_t integrateVelocities(BodyStorage& bodies, Integrator method, const VelocityIntegration& params, float dt);
+    // Both integrations run over the bodies on the pool's threads, with the same result for any number.
+    std::uint32_t integrateVelocities(BodyStorage& bodies, Integrator method, const VelocityIntegration& params, float dt,
+                                      TaskPool& pool);
     // Advances centres of mass and orientations, renormalises orientations and refreshes world-
     // frame inverse inertia. `method` must be the one given to this substep's integrateVelocities.
-    std::uint32_t integratePositions(BodyStorage& bodies, Integrator method, float dt) const;
+    std::uint32_t integratePositions(BodyStorage& bodies, Integrator method, float dt, TaskPool& pool) const;
     // Only the bound.
     std::uint32_t boundVelocities(BodyStorage& bodies, float dt) const;
 
 private:
+    // One body (dense index i); each returns whether it had to bound the body's velocity.
+    bool integrateVelocity(BodyStorage& bodies, std::size_t i, bool keepStart, const VelocityIntegration& params, float dt);
+    bool integratePosition(BodyStorage& bodies, std::size_t i, Integrator method, float dt) const;
+
     std::vector<Vec3> startLinear_, startAngular_;  // by dense index; reused, so the step never allocates
 };
 

@@ -76,6 +76,7 @@ void validateSettings(const WorldSettings& s) {
     require(isFinite(s.gravity), "gravity must be finite");
     require(isPositiveFinite(s.timeStep), "timeStep must be a positive finite number");
     require(s.substeps >= 1, "substeps must be at least 1");
+    require(s.threads >= 0, "threads must be >= 0 (0: one per core)");
     require(s.solver.velocityIterations >= 0, "solver.velocityIterations must be >= 0");
     require(s.solver.positionIterations >= 0, "solver.positionIterations must be >= 0");
     require(isFinite(s.damping.linear) && s.damping.linear >= 0.0f, "damping.linear must be finite and >= 0");

@@ -18,6 +18,7 @@ World::World(const WorldSettings& settings) { setSettings(settings); }
 
 void World::setSettings(const WorldSettings& settings) {
     validateSettings(settings);
+    if (!pool_ || settings.threads != settings_.threads) pool_ = std::make_unique<TaskPool>(settings.threads);
     settings_ = settings;
     if (!settings_.effects[Effect::Sleeping] || !settings_.sleep.enabled) {
         for (std::size_t i = 0; i < bodies_.size(); ++i) wakeIndex(i);
@@ -187,7 +188,7 @@ void World::step() {
         params.gravity = velocityParams.gravity;
         params.solver = settings_.solver;
         params.contact = settings_.contact;
-        contactSolver_.prepare(contactManager_.contacts(), bodies_, params);
+        contactSolver_.prepare(contactManager_.contacts(), bodies_, params, *pool_);
     }
     if (joints) {
         if (!contacts) {
@@ -208,7 +209,7 @@ void World::step() {
     for (int substep = 0; substep < settings_.substeps; ++substep) {
         {
             ScopedStageTimer timer(slot(Stage::IntegrateVelocities));
-            profile.counters.boundedVelocities += integrator_.integrateVelocities(bodies_, settings_.integrator, velocityParams, h);
+            profile.counters.boundedVelocities += integrator_.integrateVelocities(bodies_, settings_.integrator, velocityParams, h, *pool_);
         }
         if (solveContacts || solveJoints) {
             ScopedStageTimer timer(slot(Stage::SolveConstraints));
@@ -222,7 +223,7 @@ void World::step() {
         }
         {
             ScopedStageTimer timer(slot(Stage::IntegratePositions));
-            profile.counters.boundedVelocities += integrator_.integratePositions(bodies_, settings_.integrator, h);
+            profile.counters.boundedVelocities += integrator_.integratePositions(bodies_, settings_.integrator, h, *pool_);
         }
         if (bounce) {
             // Before relax, which would slow a body about to hit down to the speed that just closes
@@ -318,7 +319,7 @@ std::size_t World::updateBroadPhase(float dt) {
 }
 
 void World::updateContacts() {
-    contactManager_.updateManifolds(bodies_, broadPhase_, settings_.contact.speculativeDistance, settings_.timeStep);
+    contactManager_.updateManifolds(bodies_, broadPhase_, settings_.contact.speculativeDistance, settings_.timeStep, *pool_);
 }
 
 void World::recordSweepStarts() {

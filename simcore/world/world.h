@@ -10,10 +10,12 @@
 #include "simcore/dynamics/islands.h"
 #include "simcore/dynamics/joint_solver.h"
 #include "simcore/dynamics/joint_storage.h"
+#include "simcore/parallel/task_pool.h"
 #include "simcore/world/profiler.h"
 #include "simcore/world_settings.h"
 
 #include <array>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -226,6 +228,7 @@ private:
     static void applyDistanceLengths(Joint& joint);
 
     WorldSettings settings_;
+    std::unique_ptr<TaskPool> pool_;  // settings_.threads threads; a pointer so the world stays movable
     BodyStorage bodies_;
     BodyIntegrator integrator_;
     BroadPhase broadPhase_;

@@ -1,0 +1,89 @@
+#pragma once
+// A small pool of worker threads for the step's data-parallel stages: parallelFor splits an index
+// range into fixed chunks and runs them on the workers and the calling thread. Which thread runs
+// a chunk varies from call to call, the chunks do not, so a stage whose chunks write disjoint data
+// and whose reductions are combined in chunk order gives the same bits for any thread count.
+//
+// One pool runs one parallelFor at a time and a call returns only when every chunk has run. It
+// allocates when created (and parallelSum when a range has more chunks than ever before), never
+// otherwise, so a step in steady state allocates nothing.
+
+#include <algorithm>
+#include <atomic>
+#include <condition_variable>
+#include <cstddef>
+#include <cstdint>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace simcore {
+
+class TaskPool {
+public:
+    // threads: how many threads run a parallelFor, the caller's included; 0 means one per core
+    // (std::thread::hardware_concurrency), 1 runs everything on the calling thread.
+    explicit TaskPool(int threads = 1);
+    ~TaskPool();
+    TaskPool(const TaskPool&) = delete;
+    TaskPool& operator=(const TaskPool&) = delete;
+
+    int threadCount() const { return static_cast<int>(workers_.size()) + 1; }
+
+    // Chunks of `grain` indices (the last may be shorter): the unit of work, and the slots a
+    // caller's per-chunk results go in.
+    static std::size_t chunkCount(std::size_t count, std::size_t grain) { return (count + grain - 1) / grain; }
+
+    // Calls body(chunk, begin, end) for every chunk of [0, count); chunk k is [k grain, (k + 1) grain)
+    // clipped to count. With one thread or one chunk it runs inline, in chunk order.
+    template <class Body>
+    void parallelFor(std::size_t count, std::size_t grain, Body&& body) {
+        const std::size_t chunks = chunkCount(count, grain);
+        if (workers_.empty() || chunks <= 1) {
+            for (std::size_t k = 0; k < chunks; ++k) body(k, k * grain, std::min(count, (k + 1) * grain));
+            return;
+        }
+        auto call = [](void* context, std::size_t chunk, std::size_t begin, std::size_t end) {
+            (*static_cast<Body*>(context))(chunk, begin, end);
+        };
+        run({call, &body, count, grain, chunks});
+    }
+
+    // Sums count(begin, end) over the chunks of [0, count), as parallelFor runs them; the chunks'
+    // counts are added in chunk order (so the sum is the same for any thread count, and a count
+    // is never a shared variable that threads race on).
+    template <class Count>
+    std::uint64_t parallelSum(std::size_t count, std::size_t grain, Count&& countChunk) {
+        const std::size_t chunks = chunkCount(count, grain);
+        if (chunkSums_.size() < chunks) chunkSums_.resize(chunks);  // only when the work grew
+        parallelFor(count, grain, [&](std::size_t chunk, std::size_t begin, std::size_t end) {
+            chunkSums_[chunk] = countChunk(begin, end);
+        });
+        std::uint64_t sum = 0;
+        for (std::size_t k = 0; k < chunks; ++k) sum += chunkSums_[k];
+        return sum;
+    }
+
+private:
+    // A parallelFor without its type, so workers need no std::function (which may allocate).
+    struct Job {
+        void (*call)(void*, std::size_t, std::size_t, std::size_t) = nullptr;
+        void* context = nullptr;
+        std::size_t count = 0, grain = 0, chunks = 0;
+    };
+    void run(const Job& job);
+    void workerLoop();
+    void runChunks();  // takes chunks of the current job until none is left
+
+    std::vector<std::thread> workers_;
+    std::vector<std::uint64_t> chunkSums_;  // parallelSum's, by chunk; reused
+    std::mutex mutex_;
+    std::condition_variable wake_, finished_;
+    Job job_;                                // written by run() only while no worker is in a job
+    std::uint64_t generation_ = 0;           // guarded by mutex_: odd while a job is open to workers
+    std::atomic<std::size_t> nextChunk_{0};  // the next chunk nobody has taken yet
+    int busyWorkers_ = 0;  // guarded by mutex_: workers that joined the current job and have not left
+    bool stopping_ = false;
+};
+
+}  // namespace simcore

@@ -1,0 +1,220 @@
+// The task pool and the multi-threaded step: the pool splits work into fixed chunks and runs every
+// one exactly once; a world gives the same bits for 1, 2 and 4 threads on the benchmark scenes and
+// on jointed scenes (bodies and contacts compared after every step); and a step with worker
+// threads allocates nothing once the contact set is steady.
+
+#include "support/allocation_counter.h"
+#include "support/sanitizers.h"
+#include "support/state_hash.h"
+
+#include "simcore/io/scene_io.h"
+#include "simcore/parallel/task_pool.h"
+
+#include <QtTest>
+
+#include <atomic>
+#include <cstring>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+using namespace simcore;
+
+namespace {
+
+const std::filesystem::path kSourceDir = INTERPLAY_SOURCE_DIR;
+
+// Every bit of the persistent contacts, in the world's order: which pairs, their points and the
+// impulses the next step's warm start begins from.
+std::uint64_t contactHash(const World& world) {
+    std::uint64_t hash = 1469598103934665603ull;
+    auto mix = [&hash](const void* data, std::size_t size) {
+        const auto* bytes = static_cast<const unsigned char*>(data);
+        for (std::size_t i = 0; i < size; ++i) hash = (hash ^ bytes[i]) * 1099511628211ull;
+    };
+    auto mixFloat = [&mix](float value) { mix(&value, sizeof value); };
+    auto mixVec = [&mixFloat](const Vec3& v) {
+        mixFloat(v.x);
+        mixFloat(v.y);
+        mixFloat(v.z);
+    };
+    for (std::size_t c = 0; c < world.contactCount(); ++c) {
+        const ContactInfo info = world.contact(c);
+        mix(&info.bodyA.index, sizeof info.bodyA.index);
+        mix(&info.bodyB.index, sizeof info.bodyB.index);
+        mix(&info.pointCount, sizeof info.pointCount);
+        mixVec(info.normal);
+        for (int i = 0; i < info.pointCount; ++i) {
+            mixVec(info.points[static_cast<std::size_t>(i)].pointA);
+            mixVec(info.points[static_cast<std::size_t>(i)].pointB);
+            mixFloat(info.normalImpulses[static_cast<std::size_t>(i)]);
+        }
+        mixVec(info.frictionImpulse);
+    }
+    return hash;
+}
+
+struct StepTrace {
+    std::vector<std::uint64_t> bodies, contacts;  // after every step
+};
+
+StepTrace runScene(const std::string& path, int threads, int steps) {
+    SceneLoadResult loaded = loadSceneFile(kSourceDir / path);
+    if (!loaded.ok()) throw std::runtime_error(path + " does not load");
+    loaded.scene->settings.threads = threads;
+    BuiltWorld built = buildWorld(*loaded.scene);
+    StepTrace trace;
+    for (int step = 0; step < steps; ++step) {
+        built.world.step();
+        trace.bodies.push_back(test_support::stateHash(built.world));
+        trace.contacts.push_back(contactHash(built.world));
+    }
+    return trace;
+}
+
+// The first step after which two traces differ, or -1.
+int firstDifference(const StepTrace& a, const StepTrace& b) {
+    for (std::size_t i = 0; i < a.bodies.size(); ++i)
+        if (a.bodies[i] != b.bodies[i] || a.contacts[i] != b.contacts[i]) return static_cast<int>(i) + 1;
+    return -1;
+}
+
+}  // namespace
+
+class TestThreads : public QObject {
+    Q_OBJECT
+
+private slots:
+    void poolRunsEveryChunkOnce_data();
+    void poolRunsEveryChunkOnce();
+    void poolSumsInChunkOrder();
+    void stepIsBitIdenticalForAnyThreadCount_data();
+    void stepIsBitIdenticalForAnyThreadCount();
+    void changingThreadsMidRunChangesNothing();
+    void negativeThreadsAreRefused();
+    void steadyStateStepWithWorkersDoesNotAllocate();
+};
+
+void TestThreads::poolRunsEveryChunkOnce_data() {
+    QTest::addColumn<int>("threads");
+    QTest::addColumn<int>("count");
+    QTest::addColumn<int>("grain");
+    QTest::newRow("inline, one thread") << 1 << 1000 << 64;
+    QTest::newRow("two threads, ragged last chunk") << 2 << 1000 << 64;
+    QTest::newRow("four threads, more threads than chunks") << 4 << 100 << 64;
+    QTest::newRow("four threads, grain 1") << 4 << 777 << 1;
+    QTest::newRow("all cores") << 0 << 5000 << 16;
+    QTest::newRow("nothing to do") << 4 << 0 << 8;
+}
+
+void TestThreads::poolRunsEveryChunkOnce() {
+    QFETCH(int, threads);
+    QFETCH(int, count);
+    QFETCH(int, grain);
+    TaskPool pool(threads);
+    QVERIFY(pool.threadCount() >= 1);
+    if (threads > 0) QCOMPARE(pool.threadCount(), threads);
+    const auto n = static_cast<std::size_t>(count), g = static_cast<std::size_t>(grain);
+    // Several rounds: a worker must see each job once, however quickly they follow each other.
+    for (int round = 0; round < 50; ++round) {
+        std::vector<std::atomic<int>> visits(n);
+        std::vector<std::atomic<int>> chunkBegin(TaskPool::chunkCount(n, g));
+        std::atomic<bool> badRange{false};  // Qt Test's macros belong to the test's thread
+        pool.parallelFor(n, g, [&](std::size_t chunk, std::size_t begin, std::size_t end) {
+            chunkBegin[chunk].store(static_cast<int>(begin));
+            if (!(begin < end && end - begin <= g && end <= n)) badRange.store(true);
+            for (std::size_t i = begin; i < end; ++i) visits[i].fetch_add(1);
+        });
+        QVERIFY(!badRange.load());
+        for (std::size_t i = 0; i < n; ++i) QCOMPARE(visits[i].load(), 1);
+        for (std::size_t k = 0; k < chunkBegin.size(); ++k) QCOMPARE(chunkBegin[k].load(), static_cast<int>(k * g));
+    }
+}
+
+void TestThreads::poolSumsInChunkOrder() {
+    TaskPool pool(4);
+    for (int round = 0; round < 20; ++round) {
+        const std::uint64_t sum = pool.parallelSum(1001, 10, [](std::size_t begin, std::size_t end) {
+            std::uint64_t s = 0;
+            for (std::size_t i = begin; i < end; ++i) s += i;
+            return s;
+        });
+        QCOMPARE(sum, std::uint64_t{1000 * 1001 / 2});
+    }
+}
+
+void TestThreads::stepIsBitIdenticalForAnyThreadCount_data() {
+    QTest::addColumn<QString>("scene");
+    QTest::addColumn<int>("steps");
+    // Short enough for the suite to stay under a minute on a busy two-core machine (and a few
+    // times shorter under ThreadSanitizer), long enough for stacks to settle and piles to collide.
+    const int scale = test_support::kSanitized ? 5 : 1;
+    QTest::newRow("pile1k") << "scenes/bench/pile1k.json" << 240 / scale;
+    QTest::newRow("mixed1k") << "scenes/bench/mixed1k.json" << 120 / scale;
+    QTest::newRow("pyramid10") << "scenes/bench/pyramid10.json" << 60 / scale;
+    QTest::newRow("pyramid20") << "scenes/bench/pyramid20.json" << 30 / scale;
+    QTest::newRow("tower20") << "scenes/bench/tower20.json" << 120 / scale;
+    QTest::newRow("chain20 (joints)") << "scenes/chain20.json" << 240 / scale;
+    QTest::newRow("ragdoll (joints)") << "scenes/ragdoll.json" << 240 / scale;
+}
+
+void TestThreads::stepIsBitIdenticalForAnyThreadCount() {
+    QFETCH(QString, scene);
+    QFETCH(int, steps);
+    const std::string path = scene.toStdString();
+    const StepTrace one = runScene(path, 1, steps);
+    // A scene that stood still would compare nothing: the bodies must have moved.
+    QVERIFY2(one.bodies.front() != one.bodies.back(), "the scene does not move");
+    for (int threads : {2, 4}) {
+        const int step = firstDifference(one, runScene(path, threads, steps));
+        QVERIFY2(step < 0, qPrintable(QString("%1 threads differ from 1 after step %2").arg(threads).arg(step)));
+    }
+}
+
+void TestThreads::changingThreadsMidRunChangesNothing() {
+    SceneLoadResult loaded = loadSceneFile(kSourceDir / "scenes/bench/pile1k.json");
+    QVERIFY(loaded.ok());
+    BuiltWorld single = buildWorld(*loaded.scene);
+    BuiltWorld switching = buildWorld(*loaded.scene);
+    for (int step = 0; step < 60; ++step) {
+        if (step % 20 == 10) {
+            WorldSettings settings = switching.world.settings();
+            settings.threads = settings.threads == 1 ? 3 : 1;
+            switching.world.setSettings(settings);
+        }
+        single.world.step();
+        switching.world.step();
+    }
+    QCOMPARE(test_support::stateHash(switching.world), test_support::stateHash(single.world));
+    QCOMPARE(contactHash(switching.world), contactHash(single.world));
+}
+
+void TestThreads::negativeThreadsAreRefused() {
+    WorldSettings settings;
+    settings.threads = -1;
+    try {
+        World world(settings);
+        QFAIL("a negative thread count was accepted");
+    } catch (const std::invalid_argument& e) {
+        QVERIFY2(std::strstr(e.what(), "threads") != nullptr, e.what());
+    }
+}
+
+void TestThreads::steadyStateStepWithWorkersDoesNotAllocate() {
+    SceneLoadResult loaded = loadSceneFile(kSourceDir / "scenes/bench/pyramid10.json");
+    QVERIFY(loaded.ok());
+    loaded.scene->settings.threads = 2;
+    loaded.scene->settings.sleep.enabled = false;  // every body keeps being stepped
+    BuiltWorld built = buildWorld(*loaded.scene);
+    for (int i = 0; i < 60; ++i) built.world.step();
+
+    test_support::startCountingAllocations();
+    for (int i = 0; i < 30; ++i) built.world.step();
+    const std::size_t allocations = test_support::stopCountingAllocations();
+    QVERIFY(built.world.lastStepProfile().counters.contactPoints > 0);
+    QCOMPARE(allocations, std::size_t{0});
+}
+
+QTEST_GUILESS_MAIN(TestThreads)
+#include "test_threads.moc"
