@@ -20,6 +20,8 @@
 
 #include "simcore/io/scene_io.h"
 
+#include "support/isolated_settings.h"
+
 #include <QAbstractItemView>
 #include <QAction>
 #include <QApplication>
@@ -106,21 +108,16 @@ private:
 };
 
 void TestEditorKeys::initTestCase() {
-    // Settings and recovery files of this process's own, never the user's.
-    QStandardPaths::setTestModeEnabled(true);
-    QCoreApplication::setOrganizationName("InterplayTests");
-    QCoreApplication::setApplicationName(QString("test_editor_keys-%1").arg(QCoreApplication::applicationPid()));
+    test_support::isolateSettings("test_editor_keys");
     QVERIFY(m_dir.isValid());
 }
 
 void TestEditorKeys::cleanupTestCase() {
-    QFile::remove(QSettings().fileName());
-    QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation)).removeRecursively();
+    test_support::removeSettings();
 }
 
 void TestEditorKeys::init() {
-    QSettings().clear();
-    QFile::remove(DocumentManager::recoveryFilePath());
+    test_support::clearSettings();
     m_questions.clear();
     m_confirmAnswer = true;
     m_fileAnswer.clear();

@@ -19,6 +19,8 @@
 
 #include "simcore/world/world.h"
 
+#include "support/isolated_settings.h"
+
 #include <QAction>
 #include <QComboBox>
 #include <QDir>
@@ -105,20 +107,15 @@ private:
 };
 
 void TestEditorSelection::initTestCase() {
-    // Settings and recovery files of this process's own, not the user's.
-    QStandardPaths::setTestModeEnabled(true);
-    QCoreApplication::setOrganizationName("InterplayTests");
-    QCoreApplication::setApplicationName(QString("test_editor_selection-%1").arg(QCoreApplication::applicationPid()));
+    test_support::isolateSettings("test_editor_selection");
 }
 
 void TestEditorSelection::cleanupTestCase() {
-    QFile::remove(QSettings().fileName());
-    QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation)).removeRecursively();
+    test_support::removeSettings();
 }
 
 void TestEditorSelection::init() {
-    QSettings().clear();
-    QFile::remove(DocumentManager::recoveryFilePath());
+    test_support::clearSettings();
     m_window = std::make_unique<MainWindow>();
     // No modal dialog may wait for an answer in a test.
     auto& prompts = m_window->documentManager()->prompts();

@@ -27,6 +27,7 @@
 #include "simcore/io/scene_io.h"
 #include "simcore/settings_schema.h"
 #include "simcore/world/world.h"
+#include "support/isolated_settings.h"
 #include "support/fault_injection.h"
 
 #include <QAction>
@@ -194,22 +195,16 @@ private:
 };
 
 void TestMainWindow::initTestCase() {
-    // Settings, recent files and recovery files go to a test location, not the user's, and one of
-    // this process's own: two checkouts testing at once on one machine must not share them.
-    QStandardPaths::setTestModeEnabled(true);
-    QCoreApplication::setOrganizationName("InterplayTests");
-    QCoreApplication::setApplicationName(QString("test_main_window-%1").arg(QCoreApplication::applicationPid()));
+    test_support::isolateSettings("test_main_window");
     QVERIFY(m_dir.isValid());
 }
 
 void TestMainWindow::cleanupTestCase() {
-    QFile::remove(QSettings().fileName());
-    QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation)).removeRecursively();
+    test_support::removeSettings();
 }
 
 void TestMainWindow::init() {
-    QSettings().clear();
-    QFile::remove(DocumentManager::recoveryFilePath());
+    test_support::clearSettings();
     m_prompts = ScriptedPrompts{};
     m_window = std::make_unique<MainWindow>();
     m_prompts.install(*m_window);
