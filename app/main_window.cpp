@@ -5,6 +5,7 @@
 #include "app/document/scene_actions.h"
 #include "app/document/scene_document.h"
 #include "app/document/scene_tree_model.h"
+#include "app/help_dialog.h"
 #include "app/panels/inspector_panel.h"
 #include "app/panels/profiler_panel.h"
 #include "app/panels/simulation_settings_model.h"
@@ -117,6 +118,7 @@ MainWindow::MainWindow(QWidget* parent)
     createActions();
     createDocks();
     createMenusAndToolBars();
+    createHelpMenu();
     createStatusBar();
 
     connect(m_document, &SceneDocument::sceneReplaced, this, &MainWindow::documentSceneReplaced);
@@ -418,6 +420,30 @@ void MainWindow::createMenusAndToolBars() {
     addBar->addSeparator();
     addBar->addAction(m_sceneActions->duplicateAction());
     addBar->addAction(m_sceneActions->deleteAction());
+}
+
+// Last, so it stays the rightmost menu whatever the others add.
+void MainWindow::createHelpMenu() {
+    QAction* controls = createAction(this, QStringLiteral("helpControls"), tr("&Keyboard and Mouse"),
+                                     QKeySequence::HelpContents, tr("List the editor's keyboard and mouse controls"));
+    connect(controls, &QAction::triggered, this, [this] {
+        // One window, raised again on later presses, that stays open while the user tries the controls.
+        auto* dialog = findChild<HelpDialog*>();
+        if (!dialog) dialog = new HelpDialog(this);
+        dialog->show();
+        dialog->raise();
+        dialog->activateWindow();
+    });
+    QAction* about = createAction(this, QStringLiteral("about"), tr("&About Interplay"), {},
+                                  tr("Version, Qt version and engine"));
+    about->setMenuRole(QAction::AboutRole);
+    connect(about, &QAction::triggered, this, [this] { showAboutInterplay(this); });
+
+    QMenu* help = menuBar()->addMenu(tr("&Help"));
+    help->setObjectName(QStringLiteral("helpMenu"));
+    help->addAction(controls);
+    help->addSeparator();
+    help->addAction(about);
 }
 
 void MainWindow::createStatusBar() {

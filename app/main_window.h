@@ -71,6 +71,7 @@ private slots:
 private:
     void createActions();
     void createMenusAndToolBars();
+    void createHelpMenu();
     void createDocks();
     void createStatusBar();
     QDockWidget* addDock(const QString& objectName, const QString& title, QWidget* widget, Qt::DockWidgetArea area);

@@ -1,0 +1,85 @@
+#include "app/help_dialog.h"
+
+#include <QCoreApplication>
+#include <QDialogButtonBox>
+#include <QHeaderView>
+#include <QMessageBox>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+namespace interplay {
+namespace {
+
+const EditorControl kEditorControls[] = {
+    {QT_TRANSLATE_NOOP("EditorControls", "click / Ctrl- or Shift-click"),
+     QT_TRANSLATE_NOOP("EditorControls", "select a joint whose anchor (every joint marks it with a small cross) or distance rod is within 8 px, as joints are drawn over the bodies — unless the body under the cursor hides that point (a joint to the world is anchored at its body's centre): then the body, and a second click on it the joint — else the body under the cursor (a ray cast through simcore) / add or remove from the selection")},
+    {QT_TRANSLATE_NOOP("EditorControls", "left drag on a body"),
+     QT_TRANSLATE_NOOP("EditorControls", "paused: move the selection on a horizontal plane, with the anchors of the joints riding on it; playing: pull it with a spring")},
+    {QT_TRANSLATE_NOOP("EditorControls", "R held + left drag on a body (or Alt + drag, where the window manager leaves Alt alone)"),
+     QT_TRANSLATE_NOOP("EditorControls", "paused: turn the selection about the vertical, with its joints' anchors and axes")},
+    {QT_TRANSLATE_NOOP("EditorControls", "left drag / Shift or middle drag / wheel"),
+     QT_TRANSLATE_NOOP("EditorControls", "orbit / pan / zoom")},
+    {QT_TRANSLATE_NOOP("EditorControls", "right drag + W A S D Q E"),
+     QT_TRANSLATE_NOOP("EditorControls", "fly (Shift: faster)")},
+    {QT_TRANSLATE_NOOP("EditorControls", "Space, ., Ctrl+R"),
+     QT_TRANSLATE_NOOP("EditorControls", "play/pause (Space opens a drop-down that has the keyboard focus instead), one step, reset to the authored scene")},
+    {QT_TRANSLATE_NOOP("EditorControls", "Ctrl+Z / Ctrl+Y or Ctrl+Shift+Z"),
+     QT_TRANSLATE_NOOP("EditorControls", "undo / redo, from anywhere, a field included once its value is committed (typing not yet committed is undone in the field first)")},
+    {QT_TRANSLATE_NOOP("EditorControls", "Enter or Tab / Escape"),
+     QT_TRANSLATE_NOOP("EditorControls", "in a number field: commit the typed value (so does clicking away) / drop it and show the scene's value (a field shows as many digits as fit; its tooltip has six)")},
+    {QT_TRANSLATE_NOOP("EditorControls", "T"),
+     QT_TRANSLATE_NOOP("EditorControls", "throw the chosen shape from the camera along the view (until Reset)")},
+    {QT_TRANSLATE_NOOP("EditorControls", "F, Ctrl+D, Del"),
+     QT_TRANSLATE_NOOP("EditorControls", "frame the selection, duplicate, delete (bodies with their joints, and selected joints; one undo entry)")},
+    {QT_TRANSLATE_NOOP("EditorControls", "F1"),
+     QT_TRANSLATE_NOOP("EditorControls", "this list of controls (Help → Keyboard and Mouse)")},
+};
+
+}  // namespace
+
+std::span<const EditorControl> editorControls() { return kEditorControls; }
+
+HelpDialog::HelpDialog(QWidget* parent) : QDialog(parent) {
+    setObjectName(QStringLiteral("helpDialog"));
+    setWindowTitle(tr("Keyboard and Mouse"));
+    setModal(false);
+
+    const std::span<const EditorControl> controls = editorControls();
+    auto* table = new QTableWidget(int(controls.size()), 2, this);
+    table->setObjectName(QStringLiteral("controlsTable"));
+    table->setHorizontalHeaderLabels({tr("Input"), tr("Does")});
+    table->verticalHeader()->hide();
+    table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    table->setSelectionMode(QAbstractItemView::NoSelection);
+    table->setWordWrap(true);
+    table->setFocusPolicy(Qt::NoFocus);  // a reference to read: no current cell to highlight
+    for (int row = 0; row < int(controls.size()); ++row) {
+        table->setItem(row, 0, new QTableWidgetItem(QCoreApplication::translate("EditorControls", controls[row].input)));
+        table->setItem(row, 1, new QTableWidgetItem(QCoreApplication::translate("EditorControls", controls[row].does)));
+    }
+    table->setColumnWidth(0, 260);
+    table->horizontalHeader()->setStretchLastSection(true);
+
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
+    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(table);
+    layout->addWidget(buttons);
+    resize(900, 440);
+    // Wrapped rows get their height once the description column has its final width.
+    connect(table->horizontalHeader(), &QHeaderView::sectionResized, table, &QTableWidget::resizeRowsToContents);
+}
+
+void showAboutInterplay(QWidget* parent) {
+    QMessageBox::about(parent, QCoreApplication::translate("HelpDialog", "About Interplay"),
+                       QCoreApplication::translate("HelpDialog",
+                                                   "<h3>Interplay %1</h3>"
+                                                   "<p>A scene editor for 3D rigid-body physics.</p>"
+                                                   "<p>Physics by simcore, Interplay's own rigid-body engine in plain "
+                                                   "C++20 and GLM.</p>"
+                                                   "<p>Built with Qt %2, running on Qt %3.</p>")
+                           .arg(QStringLiteral(INTERPLAY_VERSION), QStringLiteral(QT_VERSION_STR), QString::fromLatin1(qVersion())));
+}
+
+}  // namespace interplay
