@@ -31,6 +31,12 @@ const EditorControl kEditorControls[] = {
      QT_TRANSLATE_NOOP("EditorControls", "throw the chosen shape from the camera along the view (until Reset)")},
     {QT_TRANSLATE_NOOP("EditorControls", "F, Ctrl+D, Del"),
      QT_TRANSLATE_NOOP("EditorControls", "frame the selection, duplicate, delete (bodies with their joints, and selected joints; one undo entry)")},
+    {QT_TRANSLATE_NOOP("EditorControls", "Home (F with nothing selected)"),
+     QT_TRANSLATE_NOOP("EditorControls", "frame all: every body's bounding sphere fills about 80 % of the view, as in a newly opened scene")},
+    {QT_TRANSLATE_NOOP("EditorControls", "numpad 1 / 3 / 7 (Ctrl: the opposite way)"),
+     QT_TRANSLATE_NOOP("EditorControls", "front / right / top view: look along -Z / -X / -Y (Y is up), keeping the target and distance; also in the View menu")},
+    {QT_TRANSLATE_NOOP("EditorControls", "numpad 5"),
+     QT_TRANSLATE_NOOP("EditorControls", "orthographic / perspective (View → Orthographic); clicks and drags pick along parallel rays")},
     {QT_TRANSLATE_NOOP("EditorControls", "F1"),
      QT_TRANSLATE_NOOP("EditorControls", "this list of controls (Help → Keyboard and Mouse)")},
 };

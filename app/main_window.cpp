@@ -227,6 +227,33 @@ void MainWindow::createActions() {
     a = createAction(this, QStringLiteral("frameSelection"), tr("&Frame Selection"), Qt::Key_F,
                      tr("Aim the camera at the selected bodies (F)"));
     connect(a, &QAction::triggered, m_viewport, &Viewport::frameSelection);
+    a = createAction(this, QStringLiteral("frameAll"), tr("Frame &All"), Qt::Key_Home,
+                     tr("Aim the camera at every body (Home, or F with nothing selected)"));
+    connect(a, &QAction::triggered, m_viewport, &Viewport::frameAll);
+    // Blender's numpad views; Ctrl looks the opposite way.
+    struct AxisViewAction {
+        const char* name;
+        const char* text;
+        QKeySequence shortcut;
+        Viewport::AxisView view;
+    };
+    const AxisViewAction axisViews[] = {
+        {"viewFront", QT_TR_NOOP("&Front"), Qt::KeypadModifier | Qt::Key_1, Viewport::AxisView::Front},
+        {"viewBack", QT_TR_NOOP("&Back"), Qt::ControlModifier | Qt::KeypadModifier | Qt::Key_1, Viewport::AxisView::Back},
+        {"viewRight", QT_TR_NOOP("&Right"), Qt::KeypadModifier | Qt::Key_3, Viewport::AxisView::Right},
+        {"viewLeft", QT_TR_NOOP("&Left"), Qt::ControlModifier | Qt::KeypadModifier | Qt::Key_3, Viewport::AxisView::Left},
+        {"viewTop", QT_TR_NOOP("&Top"), Qt::KeypadModifier | Qt::Key_7, Viewport::AxisView::Top},
+        {"viewBottom", QT_TR_NOOP("B&ottom"), Qt::ControlModifier | Qt::KeypadModifier | Qt::Key_7, Viewport::AxisView::Bottom},
+    };
+    for (const AxisViewAction& view : axisViews) {
+        a = createAction(this, QString::fromLatin1(view.name), tr(view.text), view.shortcut,
+                         tr("Look at the scene from the %1").arg(tr(view.text).remove(QLatin1Char('&')).toLower()));
+        connect(a, &QAction::triggered, m_viewport, [this, axis = view.view] { m_viewport->lookAlong(axis); });
+    }
+    a = createAction(this, QStringLiteral("orthographic"), tr("&Orthographic"), Qt::KeypadModifier | Qt::Key_5,
+                     tr("Switch between orthographic and perspective projection (numpad 5)"));
+    a->setCheckable(true);
+    connect(a, &QAction::toggled, m_viewport, &Viewport::setOrthographic);
 
     // Simulation.
     m_playAction = createAction(this, QStringLiteral("play"), tr("&Play"), Qt::Key_Space,
@@ -383,6 +410,11 @@ void MainWindow::createMenusAndToolBars() {
 
     m_viewMenu = menuBar()->addMenu(tr("&View"));
     m_viewMenu->addAction(action(QStringLiteral("frameSelection")));
+    m_viewMenu->addAction(action(QStringLiteral("frameAll")));
+    m_viewMenu->addSeparator();
+    for (const char* name : {"viewFront", "viewBack", "viewRight", "viewLeft", "viewTop", "viewBottom", "orthographic"}) {
+        m_viewMenu->addAction(action(QString::fromLatin1(name)));
+    }
     m_viewMenu->addSeparator();
     for (QDockWidget* dock : findChildren<QDockWidget*>()) m_viewMenu->addAction(dock->toggleViewAction());
 

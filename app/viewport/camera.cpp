@@ -55,8 +55,16 @@ float Camera::farPlane() const {
     return std::max(200.0f, 50.0f * m_distance);
 }
 
+float Camera::projectionNearPlane() const {
+    return m_orthographic ? -farPlane() : nearPlane();
+}
+
 glm::mat4 Camera::projectionMatrix(float aspect) const {
-    return glm::perspective(glm::radians(m_fovY), std::max(aspect, 1e-3f), nearPlane(), farPlane());
+    aspect = std::max(aspect, 1e-3f);
+    if (!m_orthographic) return glm::perspective(glm::radians(m_fovY), aspect, nearPlane(), farPlane());
+    const float halfHeight = m_distance * std::tan(0.5f * glm::radians(m_fovY));
+    const float halfWidth = halfHeight * aspect;
+    return glm::ortho(-halfWidth, halfWidth, -halfHeight, halfHeight, projectionNearPlane(), farPlane());
 }
 
 void Camera::orbit(float dxPixels, float dyPixels) {
@@ -94,6 +102,10 @@ void Camera::frame(const glm::vec3& center, float radius, float aspect) {
     const float halfFovX = std::atan(std::tan(halfFovY) * std::max(aspect, 1e-3f));
     const float halfFov = std::min(halfFovY, halfFovX);
     setDistance(std::max(radius, 0.1f) / std::sin(halfFov));
+}
+
+void Camera::frameBounds(const glm::vec3& min, const glm::vec3& max, float aspect, float fill) {
+    frame(0.5f * (min + max), 0.5f * glm::length(max - min) / std::clamp(fill, 0.1f, 1.0f), aspect);
 }
 
 void Camera::frameBox(const glm::vec3& min, const glm::vec3& max, float aspect, float margin) {

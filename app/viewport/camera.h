@@ -13,6 +13,10 @@ public:
     float pitchDegrees() const { return m_pitch; }
     float distance() const { return m_distance; }
     float fovYDegrees() const { return m_fovY; }
+    // Orthographic: parallel rays, the view as tall as the perspective one is at the target's
+    // depth, so toggling keeps the framed scene the same size there.
+    bool isOrthographic() const { return m_orthographic; }
+    void setOrthographic(bool orthographic) { m_orthographic = orthographic; }
 
     void setTarget(const glm::vec3& target) { m_target = target; }
     void setYawDegrees(float yaw);
@@ -33,6 +37,11 @@ public:
     // the ground grid stays visible when zoomed out.
     float nearPlane() const;
     float farPlane() const;
+    // The near plane the projection uses: orthographic views reach behind the eye, so zooming in
+    // (which moves the eye towards the target) never cuts away what is in front of the target.
+    float projectionNearPlane() const;
+    // How far a ray from the near plane (rayThrough's origin) can reach before the far plane (m).
+    float rayReach() const { return farPlane() - (m_orthographic ? projectionNearPlane() : 0.0f); }
 
     // Mouse gestures, in pixels of a viewport `viewportHeight` pixels tall.
     void orbit(float dxPixels, float dyPixels);
@@ -48,6 +57,9 @@ public:
     // Points the camera at a box's centre and backs off until all eight corners are inside the
     // view, leaving `margin` (a fraction of the half-width/height) free at the edges. Tighter
     // than the bounding sphere for long, flat arrangements such as a row of bodies.
+    // Frames a box's bounding sphere so that it fills `fill` of the narrower field of view: Frame
+    // All's and an opened scene's framing.
+    void frameBounds(const glm::vec3& min, const glm::vec3& max, float aspect, float fill = 0.8f);
     void frameBox(const glm::vec3& min, const glm::vec3& max, float aspect, float margin = 0.1f);
 
     // World point to widget pixels (x right, y down, origin top-left) and depth in [0, 1];
@@ -60,6 +72,7 @@ private:
     float m_pitch = 22.0f;  // degrees above the horizon the eye sits
     float m_distance = 12.0f;
     float m_fovY = 45.0f;   // degrees
+    bool m_orthographic = false;
 };
 
 }  // namespace interplay

@@ -397,7 +397,10 @@ void Renderer::drawSelectionOutline(const Frame& frame, const glm::mat4& viewPro
             if (!markPass) {
                 // Grow the shape about its bounds' centre by the outline width on every side.
                 const glm::vec3 position(body.model[3]);
-                const float depth = std::max(glm::length(position - camera.eye()), camera.nearPlane());
+                // An orthographic pixel is as wide at every depth as a perspective one at the target.
+                const float depth = camera.isOrthographic()
+                                        ? camera.distance()
+                                        : std::max(glm::length(position - camera.eye()), camera.nearPlane());
                 const glm::vec3 grow = glm::vec3(look::kOutlinePixels * pixelsToMetres * depth);
                 model = model * glm::translate(glm::mat4(1.0f), body.localCenter) *
                         glm::scale(glm::mat4(1.0f), (body.localHalfSize + grow) / body.localHalfSize) *

@@ -90,7 +90,7 @@ void SelectionTool::pressOnBody(QMouseEvent* event, const simcore::WorldRayHit& 
         // Grab the hit point; the spring keeps it at the same distance from the eye.
         const simcore::World* world = m_simulation->world();
         const glm::vec3 local = glm::inverse(world->orientation(hit.body)) * (hit.point - world->position(hit.body));
-        m_grabDepth = glm::length(hit.point - m_viewport.camera().eye());
+        m_grabDepth = glm::length(hit.point - m_viewport.rayThrough(event->position()).first);
         m_simulation->beginGrab(hit.body, local, hit.point);
         m_gesture = Gesture::Grab;
         return;
@@ -113,7 +113,7 @@ std::optional<glm::vec3> SelectionTool::dragPlanePoint(const QPointF& pixel) con
     // Rays nearly parallel to the plane would throw the body to the horizon.
     if (std::abs(direction.y) < 1e-3f) return std::nullopt;
     const float t = (m_dragPlaneHeight - origin.y) / direction.y;
-    if (t <= 0.0f || t > m_viewport.camera().farPlane()) return std::nullopt;
+    if (t <= 0.0f || t > m_viewport.camera().rayReach()) return std::nullopt;
     return origin + t * direction;
 }
 

@@ -85,7 +85,7 @@ void Viewport::frameScene() {
 void Viewport::frameSelection() {
     const simcore::World* world = m_simulation ? m_simulation->world() : nullptr;
     if (!world || !m_document || m_document->selectedBodies().isEmpty()) {
-        frameScene();
+        frameAll();
         return;
     }
     simcore::Aabb box;
@@ -96,7 +96,40 @@ void Viewport::frameSelection() {
         box.grow(simcore::worldBounds(world->shape(id), {world->position(id), world->orientation(id)}));
     }
     if (box.isEmpty()) return;
-    m_camera.frameBox(box.min, box.max, static_cast<float>(width()) / static_cast<float>(std::max(height(), 1)), 0.3f);
+    m_camera.frameBox(box.min, box.max, aspect(), 0.3f);
+    emit cameraChanged();
+    update();
+}
+
+void Viewport::frameAll() {
+    const simcore::World* world = m_simulation ? m_simulation->world() : nullptr;
+    if (!world || world->bodyCount() == 0) return;
+    simcore::Aabb box;
+    for (const simcore::BodyId id : world->bodyIds()) {
+        box.grow(simcore::worldBounds(world->shape(id), {world->position(id), world->orientation(id)}));
+    }
+    m_camera.frameBounds(box.min, box.max, aspect());
+    emit cameraChanged();
+    update();
+}
+
+void Viewport::lookAlong(AxisView view) {
+    struct Angles {
+        float yaw, pitch;
+    };
+    // Pitch ±90 is clamped just short of the pole by the camera, where "up" stays defined.
+    static constexpr Angles kAngles[] = {{0.0f, 0.0f}, {180.0f, 0.0f}, {90.0f, 0.0f},
+                                         {-90.0f, 0.0f}, {0.0f, 90.0f}, {0.0f, -90.0f}};
+    const Angles& angles = kAngles[static_cast<int>(view)];
+    m_camera.setYawDegrees(angles.yaw);
+    m_camera.setPitchDegrees(angles.pitch);
+    emit cameraChanged();
+    update();
+}
+
+void Viewport::setOrthographic(bool orthographic) {
+    if (m_camera.isOrthographic() == orthographic) return;
+    m_camera.setOrthographic(orthographic);
     emit cameraChanged();
     update();
 }
@@ -110,7 +143,7 @@ std::pair<glm::vec3, glm::vec3> Viewport::rayThrough(const QPointF& pixel) const
     const glm::vec4 farPoint = inverse * glm::vec4(x, y, 1.0f, 1.0f);
     const glm::vec3 from = glm::vec3(nearPoint) / nearPoint.w;
     const glm::vec3 to = glm::vec3(farPoint) / farPoint.w;
-    return {m_camera.eye(), glm::normalize(to - from)};
+    return {m_camera.isOrthographic() ? from : m_camera.eye(), glm::normalize(to - from)};
 }
 
 std::optional<simcore::WorldRayHit> Viewport::pick(const QPointF& pixel) const {
@@ -118,7 +151,7 @@ std::optional<simcore::WorldRayHit> Viewport::pick(const QPointF& pixel) const {
     if (!world) return std::nullopt;
     const auto [origin, direction] = rayThrough(pixel);
     // Unit direction: the fraction is a distance, and the far plane bounds what can be seen.
-    return world->castRay(origin, direction, m_camera.farPlane());
+    return world->castRay(origin, direction, m_camera.rayReach());
 }
 
 int Viewport::sceneBodyAt(const QPointF& pixel) const {
@@ -238,7 +271,7 @@ void Viewport::applyPendingFrame() {
             if (under && box.min.y - b.max.y < 20.0f) box.min.y = std::min(box.min.y, b.max.y);
         }
     }
-    m_camera.frameBox(box.min, box.max, static_cast<float>(width()) / static_cast<float>(height()), 0.15f);
+    m_camera.frameBounds(box.min, box.max, aspect());
     emit cameraChanged();
 }
 

@@ -49,10 +49,20 @@ public:
     // Aims the camera at the movable bodies (all bodies if none move) on the next frame, when the
     // widget's size is known.
     void frameScene();
-    // Aims the camera at the selected bodies (the whole scene when nothing is selected).
+    // Aims the camera at the selected bodies (Frame All when nothing is selected).
     void frameSelection();
+    // Aims the camera at every body's bounds, their bounding sphere filling 80 % of the view.
+    void frameAll();
 
-    // The world ray through a widget pixel (origin at the eye, unit direction).
+    // Blender's numpad views, in Y-up terms: Front looks along -Z, Right along -X, Top along -Y
+    // (as near as the camera's pitch limit allows); Back, Left and Bottom the opposite ways. The
+    // target and distance stay.
+    enum class AxisView { Front, Back, Right, Left, Top, Bottom };
+    void lookAlong(AxisView view);
+    void setOrthographic(bool orthographic);
+
+    // The world ray through a widget pixel (unit direction; the origin is the eye, or under an
+    // orthographic projection the pixel's point on the near plane, the rays being parallel).
     std::pair<glm::vec3, glm::vec3> rayThrough(const QPointF& pixel) const;
     // The closest body under a widget pixel, by World::castRay.
     std::optional<simcore::WorldRayHit> pick(const QPointF& pixel) const;
@@ -99,6 +109,7 @@ protected:
 private:
     void cleanup();
     void applyPendingFrame();
+    float aspect() const { return static_cast<float>(width()) / static_cast<float>(std::max(height(), 1)); }
 
     SimulationController* m_simulation = nullptr;
     SceneDocument* m_document = nullptr;

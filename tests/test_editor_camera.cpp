@@ -1,0 +1,221 @@
+// The viewport's camera views in the whole window, with real OpenGL under Xvfb and real QTest key
+// and mouse events on the viewport: Home frames every body with a margin, numpad 1 / 3 / 7 (Ctrl
+// for the opposite way) look along -Z / -X / -Y, numpad 5 toggles the orthographic projection,
+// under which rays are parallel and a click still selects and a drag still moves a body.
+
+#include "app/document/scene_document.h"
+#include "app/main_window.h"
+#include "app/simulation/simulation_controller.h"
+#include "app/viewport/viewport.h"
+
+#include "simcore/shapes/shape.h"
+#include "simcore/world/world.h"
+
+#include "support/isolated_settings.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QSurfaceFormat>
+#include <QTest>
+#include <QUndoStack>
+
+#include <glm/glm.hpp>
+
+#include <memory>
+
+using interplay::MainWindow;
+using interplay::Viewport;
+
+class TestEditorCamera : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void cleanupTestCase();
+    void init();
+    void cleanup();
+
+    void homeFramesEveryBody();
+    void numpadKeysLookAlongTheAxes();
+    void numpadFiveTogglesOrthographicAndPickingStillWorks();
+
+private:
+    Viewport* viewport() const { return m_window->viewport(); }
+    simcore::Aabb sceneBounds() const;
+    glm::vec3 project(const glm::vec3& world) const {
+        return viewport()->camera().project(world, static_cast<float>(viewport()->width()),
+                                            static_cast<float>(viewport()->height()));
+    }
+    bool inView(const glm::vec3& world) const {
+        const glm::vec3 p = project(world);
+        return p.z <= 1.0f && p.x >= 0.0f && p.y >= 0.0f && p.x <= viewport()->width() && p.y <= viewport()->height();
+    }
+
+    std::unique_ptr<MainWindow> m_window;
+};
+
+simcore::Aabb TestEditorCamera::sceneBounds() const {
+    const simcore::World* world = m_window->simulation()->world();
+    simcore::Aabb box;
+    for (const simcore::BodyId id : world->bodyIds()) {
+        box.grow(simcore::worldBounds(world->shape(id), {world->position(id), world->orientation(id)}));
+    }
+    return box;
+}
+
+void TestEditorCamera::initTestCase() {
+    test_support::isolateSettings("test_editor_camera");
+}
+
+void TestEditorCamera::cleanupTestCase() {
+    test_support::removeSettings();
+}
+
+void TestEditorCamera::init() {
+    test_support::clearSettings();
+    m_window = std::make_unique<MainWindow>();
+    m_window->openDefaultScene();
+    m_window->resize(1400, 900);
+    m_window->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+    m_window->activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(m_window.get()));
+    viewport()->grabViewport();
+    viewport()->setFocus();
+    QVERIFY(QTest::qWaitFor([this] { return viewport()->hasFocus(); }));
+    QVERIFY(m_window->simulation()->world()->bodyCount() >= 2);
+}
+
+void TestEditorCamera::cleanup() {
+    if (m_window) {
+        m_window->document()->undoStack()->setClean();  // close without a prompt
+        m_window->close();
+    }
+    m_window.reset();
+}
+
+void TestEditorCamera::homeFramesEveryBody() {
+    // Look away from the scene, close up: no body is in view.
+    interplay::Camera& camera = viewport()->camera();
+    camera.setTarget(glm::vec3(500.0f, 50.0f, 500.0f));
+    camera.setDistance(1.0f);
+    const simcore::World* world = m_window->simulation()->world();
+    for (const simcore::BodyId id : world->bodyIds()) QVERIFY(!inView(world->position(id)));
+
+    QTest::keyClick(viewport(), Qt::Key_Home);
+    for (const simcore::BodyId id : world->bodyIds()) {
+        QVERIFY2(inView(world->position(id)), qPrintable(QString("body %1").arg(id.index)));
+    }
+    // The bounding sphere is not clipped: its rim along the camera's axes stays inside the view,
+    // and the margin leaves it short of the edges (it fills about 80 % of the narrower side).
+    const simcore::Aabb box = sceneBounds();
+    const glm::vec3 centre = 0.5f * (box.min + box.max);
+    const float radius = 0.5f * glm::length(box.max - box.min);
+    for (const glm::vec3& rim : {centre + radius * camera.right(), centre - radius * camera.right(),
+                                 centre + radius * camera.up(), centre - radius * camera.up()}) {
+        QVERIFY(inView(rim));
+    }
+    const float rimPixels = glm::length(glm::vec2(project(centre + radius * camera.up())) - glm::vec2(project(centre)));
+    const float halfView = 0.5f * static_cast<float>(std::min(viewport()->width(), viewport()->height()));
+    QVERIFY2(rimPixels < 0.9f * halfView && rimPixels > 0.6f * halfView, qPrintable(QString::number(rimPixels)));
+
+    // F with nothing selected frames the same; with a selection it frames the selection, closer.
+    const float allDistance = camera.distance();
+    camera.setDistance(300.0f);
+    m_window->document()->setSelectedBodies({});
+    QTest::keyClick(viewport(), Qt::Key_F);
+    QCOMPARE(camera.distance(), allDistance);
+    m_window->document()->setSelectedBodies({1});
+    QTest::keyClick(viewport(), Qt::Key_F);
+    QVERIFY(camera.distance() < allDistance);
+}
+
+void TestEditorCamera::numpadKeysLookAlongTheAxes() {
+    const interplay::Camera& camera = viewport()->camera();
+    const struct {
+        Qt::Key key;
+        Qt::KeyboardModifiers modifiers;
+        glm::vec3 forward;
+    } views[] = {
+        {Qt::Key_1, Qt::KeypadModifier, {0.0f, 0.0f, -1.0f}},
+        {Qt::Key_3, Qt::KeypadModifier, {-1.0f, 0.0f, 0.0f}},
+        {Qt::Key_7, Qt::KeypadModifier, {0.0f, -1.0f, 0.0f}},
+        {Qt::Key_1, Qt::KeypadModifier | Qt::ControlModifier, {0.0f, 0.0f, 1.0f}},
+        {Qt::Key_3, Qt::KeypadModifier | Qt::ControlModifier, {1.0f, 0.0f, 0.0f}},
+        {Qt::Key_7, Qt::KeypadModifier | Qt::ControlModifier, {0.0f, 1.0f, 0.0f}},
+    };
+    for (const auto& view : views) {
+        const glm::vec3 target = camera.target();
+        const float distance = camera.distance();
+        QTest::keyClick(viewport(), view.key, view.modifiers);
+        QVERIFY2(glm::dot(camera.forward(), view.forward) > 0.9998f,
+                 qPrintable(QString("key %1: %2 %3 %4")
+                                .arg(QKeySequence(view.key | view.modifiers).toString())
+                                .arg(camera.forward().x).arg(camera.forward().y).arg(camera.forward().z)));
+        QCOMPARE(camera.target(), target);
+        QCOMPARE(camera.distance(), distance);
+    }
+}
+
+void TestEditorCamera::numpadFiveTogglesOrthographicAndPickingStillWorks() {
+    QAction* ortho = m_window->action("orthographic");
+    QVERIFY(!viewport()->camera().isOrthographic());
+    QTest::keyClick(viewport(), Qt::Key_7, Qt::KeypadModifier);
+    QTest::keyClick(viewport(), Qt::Key_5, Qt::KeypadModifier);
+    QVERIFY(viewport()->camera().isOrthographic());
+    QVERIFY(ortho->isChecked());
+    QTest::keyClick(viewport(), Qt::Key_Home);
+
+    // Rays are parallel now.
+    const auto [originA, directionA] = viewport()->rayThrough(QPointF(10, 10));
+    const auto [originB, directionB] = viewport()->rayThrough(QPointF(viewport()->width() - 10, viewport()->height() - 10));
+    QVERIFY(glm::dot(directionA, directionB) > 0.99999f);
+    QVERIFY(glm::length(originA - originB) > 1.0f);
+
+    // The topmost movable body, seen from above, is clicked at its centre's pixel.
+    const simcore::World* world = m_window->simulation()->world();
+    const auto& ids = m_window->simulation()->bodyIds();
+    int top = -1;
+    for (std::size_t i = 0; i < ids.size(); ++i) {
+        if (world->motionType(ids[i]) == simcore::MotionType::Static) continue;
+        if (top < 0 || world->position(ids[i]).y > world->position(ids[static_cast<std::size_t>(top)]).y) {
+            top = static_cast<int>(i);
+        }
+    }
+    QVERIFY(top >= 0);
+    const glm::vec3 before = m_window->document()->body(top).body.position;
+    const glm::vec3 projected = project(before);
+    const QPoint pixel(qRound(projected.x), qRound(projected.y));
+    QVERIFY(viewport()->rect().contains(pixel));
+    m_window->document()->setSelectedBodies({});
+    QTest::mouseClick(viewport(), Qt::LeftButton, {}, pixel);
+    QCOMPARE(m_window->document()->selectedBodies(), QList<int>{top});
+
+    // A drag 60 px to the right moves it along +X by 60 px' worth of metres.
+    const int entries = m_window->document()->undoStack()->count();
+    QTest::mousePress(viewport(), Qt::LeftButton, {}, pixel);
+    for (int i = 1; i <= 10; ++i) QTest::mouseMove(viewport(), pixel + QPoint(6 * i, 0));
+    QTest::mouseRelease(viewport(), Qt::LeftButton, {}, pixel + QPoint(60, 0));
+    const glm::vec3 after = m_window->document()->body(top).body.position;
+    const glm::vec3 expectedPixel = projected + glm::vec3(60.0f, 0.0f, 0.0f);
+    QVERIFY2(std::abs(project(after).x - expectedPixel.x) < 2.0f && std::abs(project(after).y - expectedPixel.y) < 2.0f,
+             qPrintable(QString("%1 %2").arg(project(after).x).arg(project(after).y)));
+    QVERIFY(after.x > before.x);
+    QCOMPARE(m_window->document()->undoStack()->count(), entries + 1);
+
+    // And back to perspective.
+    QTest::keyClick(viewport(), Qt::Key_5, Qt::KeypadModifier);
+    QVERIFY(!viewport()->camera().isOrthographic());
+    QVERIFY(!ortho->isChecked());
+
+}
+
+// The viewport needs GL 3.3 core, set before the application creates any window (as main() does).
+int main(int argc, char* argv[]) {
+    QSurfaceFormat::setDefaultFormat(interplay::Viewport::requiredSurfaceFormat());
+    QApplication app(argc, argv);
+    TestEditorCamera test;
+    return QTest::qExec(&test, argc, argv);
+}
+
+#include "test_editor_camera.moc"
