@@ -11,6 +11,7 @@
 #include "simcore/shapes/shape.h"
 #include "simcore/world/world.h"
 
+#include "support/editor_window.h"
 #include "support/isolated_settings.h"
 
 #include <QAction>
@@ -75,11 +76,7 @@ void TestEditorCamera::init() {
     test_support::clearSettings();
     m_window = std::make_unique<MainWindow>();
     m_window->openDefaultScene();
-    m_window->resize(1400, 900);
-    m_window->show();
-    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
-    m_window->activateWindow();
-    QVERIFY(QTest::qWaitForWindowActive(m_window.get()));
+    QVERIFY(test_support::showActive(*m_window));
     viewport()->grabViewport();
     viewport()->setFocus();
     QVERIFY(QTest::qWaitFor([this] { return viewport()->hasFocus(); }));
@@ -87,11 +84,7 @@ void TestEditorCamera::init() {
 }
 
 void TestEditorCamera::cleanup() {
-    if (m_window) {
-        m_window->document()->undoStack()->setClean();  // close without a prompt
-        m_window->close();
-    }
-    m_window.reset();
+    test_support::closeWithoutPrompt(m_window);
 }
 
 void TestEditorCamera::homeFramesEveryBody() {

@@ -6,6 +6,7 @@
 #include "app/help_dialog.h"
 #include "app/main_window.h"
 
+#include "support/editor_window.h"
 #include "support/isolated_settings.h"
 
 #include <QAction>
@@ -81,19 +82,11 @@ void TestEditorHelp::init() {
     test_support::clearSettings();
     m_window = std::make_unique<MainWindow>();
     m_window->openDefaultScene();
-    m_window->resize(1400, 900);
-    m_window->show();
-    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
-    m_window->activateWindow();
-    QVERIFY(QTest::qWaitForWindowActive(m_window.get()));
+    QVERIFY(test_support::showActive(*m_window));
 }
 
 void TestEditorHelp::cleanup() {
-    if (m_window) {
-        m_window->document()->undoStack()->setClean();  // close without a prompt
-        m_window->close();
-    }
-    m_window.reset();
+    test_support::closeWithoutPrompt(m_window);
 }
 
 void TestEditorHelp::everyControlIsInTheReadme() {

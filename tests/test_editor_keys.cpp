@@ -20,6 +20,7 @@
 
 #include "simcore/io/scene_io.h"
 
+#include "support/editor_window.h"
 #include "support/isolated_settings.h"
 
 #include <QAbstractItemView>
@@ -133,20 +134,12 @@ void TestEditorKeys::init() {
     };
     prompts.chooseFile = [this](DocumentManager::FileChoice, const QString&, const QString&) { return m_fileAnswer; };
     m_window->openDefaultScene();
-    m_window->resize(1400, 900);
-    m_window->show();
-    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
-    m_window->activateWindow();
-    QVERIFY(QTest::qWaitForWindowActive(m_window.get()));
+    QVERIFY(test_support::showActive(*m_window));
     m_window->viewport()->grabViewport();
 }
 
 void TestEditorKeys::cleanup() {
-    if (m_window) {
-        history()->setClean();  // close without a prompt
-        m_window->close();
-    }
-    m_window.reset();
+    test_support::closeWithoutPrompt(m_window);
 }
 
 QQuickWidget* TestEditorKeys::showSettingsPanel() {

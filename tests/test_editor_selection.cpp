@@ -19,6 +19,7 @@
 
 #include "simcore/world/world.h"
 
+#include "support/editor_window.h"
 #include "support/isolated_settings.h"
 
 #include <QAction>
@@ -131,12 +132,8 @@ void TestEditorSelection::init() {
 }
 
 void TestEditorSelection::cleanup() {
-    if (m_window) {
-        m_window->simulation()->pause();
-        m_window->document()->undoStack()->setClean();  // close without a prompt
-        m_window->close();
-    }
-    m_window.reset();
+    if (m_window) m_window->simulation()->pause();
+    test_support::closeWithoutPrompt(m_window);
 }
 
 void TestEditorSelection::openScene(const char* name) {

@@ -27,6 +27,7 @@
 #include "simcore/io/scene_io.h"
 #include "simcore/settings_schema.h"
 #include "simcore/world/world.h"
+#include "support/editor_window.h"
 #include "support/isolated_settings.h"
 #include "support/fault_injection.h"
 
@@ -216,11 +217,7 @@ void TestMainWindow::init() {
 }
 
 void TestMainWindow::cleanup() {
-    if (m_window) {
-        m_window->document()->undoStack()->setClean();  // close without a prompt
-        m_window->close();
-    }
-    m_window.reset();
+    test_support::closeWithoutPrompt(m_window);
 }
 
 void TestMainWindow::titleShowsNameAndModifiedMarker() {
