@@ -19,6 +19,10 @@ packages=(
     # reliability: clang with its sanitizer and libFuzzer runtimes, llvm-symbolizer for readable
     # reports (scripts/test-sanitizers.sh, scripts/fuzz.sh)
     clang libclang-rt-14-dev llvm
+    # geometry import: OBJ, STL and glTF meshes (simcore's importer)
+    libassimp-dev
+    # distributed sweeps: the GNU parallel recipe of interplay-sweep, tested in CI
+    parallel
 )
 
 missing=()
