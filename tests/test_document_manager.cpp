@@ -44,6 +44,7 @@ private slots:
     void saveAsRecordsTheFileAndReportsNothingToRecover();
     void autosaveIsRecoveredIntoAFreshDocument();
     void revertAsksAndKeepsTheHistory();
+    void anOutsideWriteInPiecesIsAskedAboutOnce();
 
 private:
     QTemporaryDir m_dir;
@@ -167,6 +168,39 @@ void TestDocumentManager::revertAsksAndKeepsTheHistory() {
     document.undoStack()->undo();  // the history before the revert is intact
     document.undoStack()->undo();
     QCOMPARE(simcore::serializeScene(document.scene()), saved);
+}
+
+void TestDocumentManager::anOutsideWriteInPiecesIsAskedAboutOnce() {
+    SceneDocument document;
+    DocumentManager files(&document);
+    document.newDefault();
+    const QString path = m_dir.filePath("pieces.json");
+    QVERIFY(document.save(path));
+    QStringList questions;
+    files.prompts().confirm = [&](const QString&, const QString& question) {
+        questions << question;
+        return true;
+    };
+
+    // Another program rewrites the file in place, not atomically: it truncates it, and the watcher
+    // sees that, before it writes the new scene a moment later.
+    SceneDocument other;
+    QVERIFY(other.load(INTERPLAY_SOURCE_DIR "/scenes/incline.json"));
+    const QByteArray text = QByteArray::fromStdString(simcore::serializeScene(other.scene()));
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    file.flush();
+    QTest::qWait(100);
+    file.write(text.left(text.size() / 2));
+    file.flush();
+    QTest::qWait(100);
+    file.write(text.mid(text.size() / 2));
+    file.close();
+
+    QTRY_COMPARE_WITH_TIMEOUT(questions.size(), 1, 5000);
+    QTest::qWait(1000);  // and no second question once the writes have settled
+    QCOMPARE(questions.size(), 1);
+    QCOMPARE(simcore::serializeScene(document.scene()), simcore::serializeScene(other.scene()));
 }
 
 QTEST_GUILESS_MAIN(TestDocumentManager)

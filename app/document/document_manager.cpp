@@ -11,6 +11,7 @@
 #include <QFileInfo>
 #include <QFileSystemWatcher>
 #include <QSaveFile>
+#include <QScopedValueRollback>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QTimer>
@@ -23,6 +24,9 @@ namespace interplay {
 namespace {
 
 constexpr int kDefaultAutosaveMs = 60'000;
+// A program that rewrites a file in place (truncate, then write, perhaps in pieces) sends a change
+// per piece: the question waits until the file has been quiet this long, so it is asked once.
+constexpr int kOutsideWriteSettleMs = 300;
 const QString kRecentFilesKey = QStringLiteral("recentFiles");
 
 // Size and modification time: what tells our own write apart from another program's.
@@ -52,7 +56,8 @@ DocumentManager::DocumentManager(SceneDocument* document, QObject* parent)
       m_document(document),
       m_prompts(unansweredPrompts()),
       m_autosaveTimer(new QTimer(this)),
-      m_watcher(new QFileSystemWatcher(this)) {
+      m_watcher(new QFileSystemWatcher(this)),
+      m_outsideWriteSettled(new QTimer(this)) {
     connect(m_document, &SceneDocument::filePathChanged, this, &DocumentManager::watchDocumentFile);
     connect(m_document, &SceneDocument::saved, this, &DocumentManager::watchDocumentFile);
     // A clean scene (new, opened, reverted) makes any earlier autosave stale.
@@ -60,6 +65,9 @@ DocumentManager::DocumentManager(SceneDocument* document, QObject* parent)
         if (!m_document->isModified()) removeRecoveryFile();
     });
     connect(m_watcher, &QFileSystemWatcher::fileChanged, this, &DocumentManager::documentFileChanged);
+    m_outsideWriteSettled->setSingleShot(true);
+    m_outsideWriteSettled->setInterval(kOutsideWriteSettleMs);
+    connect(m_outsideWriteSettled, &QTimer::timeout, this, &DocumentManager::askAboutOutsideChange);
     connect(m_autosaveTimer, &QTimer::timeout, this, &DocumentManager::autosaveNow);
     m_autosaveTimer->start(kDefaultAutosaveMs);
 }
@@ -245,20 +253,28 @@ void DocumentManager::watchDocumentFile() {
 
 void DocumentManager::documentFileChanged(const QString& path) {
     if (path != m_document->filePath()) return;
+    // Writing in place, or replacing the file, can drop it from the watch: add it again.
+    if (QFileInfo::exists(path)) m_watcher->addPath(path);
+    m_outsideWriteSettled->start();
+}
+
+void DocumentManager::askAboutOutsideChange() {
+    const QString path = m_document->filePath();
+    if (path.isEmpty() || m_askingAboutOutsideChange) return;  // a change during the question: it reloads the latest
     const QString stamp = fileStamp(path);
-    if (stamp.isEmpty() || stamp == m_expectedFileStamp) {
-        // Deleted (nothing to reload; saving will recreate it), or our own write.
-        if (!stamp.isEmpty()) m_watcher->addPath(path);
-        return;
-    }
+    // Deleted (nothing to reload; saving will recreate it), or our own write.
+    if (stamp.isEmpty() || stamp == m_expectedFileStamp) return;
     m_expectedFileStamp = stamp;  // ask once per outside change
-    m_watcher->addPath(path);
     const QString name = QFileInfo(path).fileName();
     const QString question =
         m_document->isModified()
             ? tr("\"%1\" was changed by another program. Reload it and lose your unsaved changes?").arg(name)
             : tr("\"%1\" was changed by another program. Reload it?").arg(name);
-    if (m_prompts.confirm(tr("File Changed"), question)) reloadFile();
+    const QScopedValueRollback asking(m_askingAboutOutsideChange, true);
+    if (m_prompts.confirm(tr("File Changed"), question)) {
+        m_expectedFileStamp = fileStamp(path);  // what the reload read
+        reloadFile();
+    }
 }
 
 QString DocumentManager::recoveryFilePath() {

@@ -93,11 +93,14 @@ private:
     void addRecentFile(const QString& path);
     void watchDocumentFile();
     void documentFileChanged(const QString& path);
+    void askAboutOutsideChange();
 
     SceneDocument* m_document;
     Prompts m_prompts;
     QTimer* m_autosaveTimer;
     QFileSystemWatcher* m_watcher;
+    QTimer* m_outsideWriteSettled;  // restarted by every change: the question waits for the last
+    bool m_askingAboutOutsideChange = false;
     QString m_expectedFileStamp;  // size and time of the file as we last read or wrote it
 };
 
