@@ -144,7 +144,10 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_simulation, &SimulationController::bodiesEdited, this, &MainWindow::updateStatus);
     connect(m_simulation, &SimulationController::simulationError, this, &MainWindow::showSimulationError);
     connect(m_simulation, &SimulationController::simulationWarning, this,
-            [this](const QString& message) { statusBar()->showMessage(message, 15000); });
+            [this](const QString& summary, const QString& details) {
+                statusBar()->showMessage(summary, 15000);
+                statusBar()->setToolTip(summary + QStringLiteral(".\n") + details);
+            });
 
     // Text fields claim Ctrl+Z even with nothing of theirs to undo, and Space reaches the play
     // shortcut before a focused drop-down: the filter decides who gets these keys (eventFilter).

@@ -38,11 +38,13 @@
 #include <QFile>
 #include <QImage>
 #include <QItemSelectionModel>
+#include <QLabel>
 #include <QLineEdit>
 #include <QMenu>
 #include <QMimeData>
 #include <QQuickItem>
 #include <QQuickWidget>
+#include <QStatusBar>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -160,6 +162,7 @@ private slots:
     void recentFilesAreAbsoluteDeduplicatedAndCapped();
     void autosaveIsOfferedForRecovery();
     void fileChangedOnDiskOffersReload();
+    void speedBoundWarningFitsTheStatusBar();
 
     void droppingASceneFileOpensIt();
     void clickingABodySelectsIt();
@@ -440,6 +443,34 @@ void TestMainWindow::fileChangedOnDiskOffersReload() {
     QTRY_COMPARE_WITH_TIMEOUT(m_prompts.questions.size(), 1, 5000);
     QVERIFY(m_prompts.questions.first().contains("watched.json"));
     QCOMPARE(sceneText(m_window->document()->scene()), sceneText(other.scene()));
+}
+
+void TestMainWindow::speedBoundWarningFitsTheStatusBar() {
+    // The torn rope of test_editor_soak: the light box is flung at the bound within a few steps.
+    const simcore::SceneLoadResult torn = simcore::parseScene(R"({"format": "interplay.scene", "version": 1,
+        "bodies": [
+          {"name": "light", "shape": {"type": "box", "halfExtents": [0.36, 0.25, 0.063]}, "mass": 18, "position": [0, 5, 0]},
+          {"name": "heavy", "shape": {"type": "sphere", "radius": 0.61}, "mass": 1400, "position": [0, 5, 1000]}],
+        "joints": [{"type": "distance", "bodyA": "light", "bodyB": "heavy", "anchor": [8, 5, 0],
+                    "anchorB": [0, 5, 1000], "minLength": 0, "maxLength": 1}]})", "torn");
+    QVERIFY(torn.ok());
+    m_window->document()->restoreRecovered(*torn.scene, QString());
+    m_window->resize(1280, 800);  // the editor's smallest default size (main.cpp)
+    QTest::qWait(50);
+    m_window->simulation()->stepFrames(60);
+    QStatusBar* bar = m_window->statusBar();
+    const QString message = bar->currentMessage();
+    QVERIFY2(message.contains(QStringLiteral("speed limit")), qPrintable(message));
+
+    // The message is drawn left of the permanent labels (time, cost, bodies, frame rate).
+    int labelsLeft = bar->width();
+    for (const QLabel* label : bar->findChildren<QLabel*>())
+        if (label->isVisible()) labelsLeft = std::min(labelsLeft, label->geometry().left());
+    QVERIFY2(bar->fontMetrics().horizontalAdvance(message) < labelsLeft,
+             qPrintable(QStringLiteral("%1 px of message, %2 px before the labels")
+                            .arg(bar->fontMetrics().horizontalAdvance(message))
+                            .arg(labelsLeft)));
+    QVERIFY2(bar->toolTip().contains(QStringLiteral("more substeps")), qPrintable(bar->toolTip()));
 }
 
 void TestMainWindow::droppingASceneFileOpensIt() {

@@ -446,10 +446,10 @@ bool SimulationController::advance(int steps) {
         if (m_history.size() > kHistoryLength) m_history.pop_front();
         if (!m_boundWarned && world.lastStepProfile().counters.boundedVelocities > 0) {
             m_boundWarned = true;
-            emit simulationWarning(tr("At step %1 a body reached the engine's speed limit (100 km/s, a quarter turn per "
-                                      "substep): the motion is no longer physical. Unstable assemblies (a joint torn "
-                                      "far apart, a violent overlap) get there; more substeps or a smaller time step help.")
-                                       .arg(world.stepCount()));
+            emit simulationWarning(
+                tr("Step %1: a body reached the speed limit; the motion is no longer physical").arg(world.stepCount()),
+                tr("The engine bounds every body to 100 km/s and a quarter turn per substep. Unstable assemblies "
+                   "(a joint torn far apart, a violent overlap) get there; more substeps or a smaller time step help."));
         }
     }
     // Checked once per batch, not per step: enough to stop playback before garbage spreads.

@@ -162,8 +162,9 @@ signals:
     void playingChanged(bool playing);
     void timeScaleChanged(double scale);
     void simulationError(const QString& message);  // e.g. a non-finite state; playback stops
-    // The run is no longer physical (a velocity cut to the engine's safety bound); once per run.
-    void simulationWarning(const QString& message);
+    // The run is no longer physical (a velocity cut to the engine's safety bound); once per run. The
+    // summary fits a status bar; the details say why and what helps.
+    void simulationWarning(const QString& summary, const QString& details);
     void editFailed(const QString& message);       // a followed edit could be neither applied nor rebuilt from
 
 private:

@@ -28,7 +28,9 @@ struct EditorSession {
         QObject::connect(&simulation, &interplay::SimulationController::simulationError, &document,
                          [this](const QString& message) { simulationErrors << message; });
         QObject::connect(&simulation, &interplay::SimulationController::simulationWarning, &document,
-                         [this](const QString& message) { simulationWarnings << message; });
+                         [this](const QString& summary, const QString& details) {
+                             simulationWarnings << summary + QLatin1Char('\n') + details;
+                         });
     }
 
     // Apply Simulated Pose, as the window's action makes it.
