@@ -23,6 +23,7 @@
 #include "support/isolated_settings.h"
 
 #include <QAction>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDir>
 #include <QFile>
@@ -99,6 +100,7 @@ private slots:
     void distanceJointSecondAnchorRidesOnBodyB();
     void undoneDeleteDuringARunReturnsTheLiveState();
     void mixedSelectionShowsMixedChoices();
+    void mixedCheckBoxesArePartlyChecked();
     void sceneTreeShowsWholeNames();
 
 private:
@@ -386,6 +388,50 @@ void TestEditorSelection::mixedSelectionShowsMixedChoices() {
     const auto chosen = static_cast<simcore::MotionType>(motion->itemData(0).toInt());
     QVERIFY(std::all_of(all.begin(), all.end(), [&](int i) { return document->body(i).body.motion == chosen; }));
     QCOMPARE(motion->currentIndex(), 0);
+}
+
+void TestEditorSelection::mixedCheckBoxesArePartlyChecked() {
+    openScene("bullets_vs_walls.json");
+    interplay::SceneDocument* document = m_window->document();
+    auto* ccd = m_window->inspector()->findChild<QCheckBox*>("ccd");
+    QVERIFY(ccd);
+    int with = -1, without = -1;
+    for (int i = 0; i < document->bodyCount(); ++i) {
+        const simcore::SceneBody& body = document->body(i);
+        if (body.body.motion != simcore::MotionType::Dynamic) continue;
+        (body.body.ccd ? with : without) = i;
+    }
+    QVERIFY(with >= 0 && without >= 0);
+    document->setSelectedBodies({with, without});
+    QCOMPARE(ccd->checkState(), Qt::PartiallyChecked);
+    // The first click sets every selected body, and the box then shows what they share.
+    const int entries = document->undoStack()->count();
+    QTest::mouseClick(ccd, Qt::LeftButton, {}, QPoint(8, ccd->height() / 2));
+    QVERIFY(document->body(with).body.ccd && document->body(without).body.ccd);
+    QCOMPARE(ccd->checkState(), Qt::Checked);
+    QCOMPARE(document->undoStack()->count(), entries + 1);
+    QTest::mouseClick(ccd, Qt::LeftButton, {}, QPoint(8, ccd->height() / 2));
+    QVERIFY(!document->body(with).body.ccd && !document->body(without).body.ccd);
+    QCOMPARE(ccd->checkState(), Qt::Unchecked);  // two states again once the bodies agree
+    document->undoStack()->undo();
+    document->undoStack()->undo();
+    QCOMPARE(ccd->checkState(), Qt::PartiallyChecked);
+
+    // Joints: the ragdoll's elbows have limits; one without them makes the selection mixed.
+    openScene("ragdoll.json");
+    document = m_window->document();
+    auto* limits = m_window->inspector()->findChild<QCheckBox*>("limits");
+    QVERIFY(limits);
+    QList<int> hinges;
+    for (int i = 0; i < document->jointCount(); ++i)
+        if (document->joint(i).joint.type == simcore::JointType::Hinge) hinges << i;
+    QVERIFY(hinges.size() >= 2);
+    document->setSelectedJoints({hinges[0]});
+    QCOMPARE(limits->checkState(), Qt::Checked);
+    QTest::mouseClick(limits, Qt::LeftButton, {}, QPoint(8, limits->height() / 2));
+    QVERIFY(!document->joint(hinges[0]).joint.limits);
+    document->setSelectedJoints({hinges[0], hinges[1]});
+    QCOMPARE(limits->checkState(), Qt::PartiallyChecked);
 }
 
 void TestEditorSelection::sceneTreeShowsWholeNames() {

@@ -129,6 +129,17 @@ bool hasLengthRange(const simcore::SceneJoint& j) {
     return isDistance(j) && (j.joint.minLength || j.joint.maxLength);
 }
 
+// A value the selection shares, or a partly checked box where it differs. The third state is for
+// showing only: a click sets every selected object, and they agree again.
+void showSharedCheck(QCheckBox* box, std::optional<bool> shared) {
+    if (shared) {
+        box->setTristate(false);
+        box->setChecked(*shared);
+    } else {
+        box->setCheckState(Qt::PartiallyChecked);
+    }
+}
+
 QString motionLabel(simcore::MotionType motion) {
     switch (motion) {
     case simcore::MotionType::Dynamic: return InspectorPanel::tr("Dynamic");
@@ -740,7 +751,7 @@ void InspectorPanel::refreshBodies() {
         m_color->setText(color ? tr("Automatic") : tr("mixed"));
         m_color->setStyleSheet(QString());
     }
-    m_ccd->setChecked(lead.body.ccd);
+    showSharedCheck(m_ccd, sharedValue(bodies, [](const simcore::SceneBody& b) { return b.body.ccd; }));
 }
 
 void InspectorPanel::refreshJoints() {
@@ -759,11 +770,18 @@ void InspectorPanel::refreshJoints() {
                                                      lead.bodyB ? m_document->bodyName(static_cast<int>(*lead.bodyB))
                                                                 : tr("the world"))
                                : tr("%1 pairs").arg(joints.size()));
-    m_limits->setChecked(lead.joint.limits.has_value());
-    m_motor->setChecked(lead.joint.motor.has_value());
-    m_lengths->setChecked(hasLengthRange(lead));
-    m_spring->setChecked(lead.joint.spring.has_value());
-    m_collideConnected->setChecked(lead.joint.collideConnected);
+    // Each box over the joints it applies to (its row is shown when it applies to any).
+    const auto showOption = [&joints](QCheckBox* box, const auto& appliesTo, const auto& isOn) {
+        std::vector<const simcore::SceneJoint*> applicable;
+        std::copy_if(joints.begin(), joints.end(), std::back_inserter(applicable), [&](const auto* j) { return appliesTo(*j); });
+        showSharedCheck(box, sharedValue(applicable, isOn));
+    };
+    showOption(m_limits, isHingeOrSlider, [](const simcore::SceneJoint& j) { return j.joint.limits.has_value(); });
+    showOption(m_motor, isHingeOrSlider, [](const simcore::SceneJoint& j) { return j.joint.motor.has_value(); });
+    showOption(m_lengths, isDistance, [](const simcore::SceneJoint& j) { return hasLengthRange(j); });
+    showOption(m_spring, isDistance, [](const simcore::SceneJoint& j) { return j.joint.spring.has_value(); });
+    showOption(m_collideConnected, [](const simcore::SceneJoint& j) { return j.bodyB.has_value(); },
+               [](const simcore::SceneJoint& j) { return j.joint.collideConnected; });
 }
 
 }  // namespace interplay
