@@ -28,6 +28,7 @@
 #include <QDir>
 #include <QFile>
 #include <QHeaderView>
+#include <QLabel>
 #include <QPushButton>
 #include <QSettings>
 #include <QStandardPaths>
@@ -101,6 +102,7 @@ private slots:
     void undoneDeleteDuringARunReturnsTheLiveState();
     void mixedSelectionShowsMixedChoices();
     void mixedCheckBoxesArePartlyChecked();
+    void inspectorShowsTheMassADensityGives();
     void sceneTreeShowsWholeNames();
 
 private:
@@ -432,6 +434,32 @@ void TestEditorSelection::mixedCheckBoxesArePartlyChecked() {
     QVERIFY(!document->joint(hinges[0]).joint.limits);
     document->setSelectedJoints({hinges[0], hinges[1]});
     QCOMPARE(limits->checkState(), Qt::PartiallyChecked);
+}
+
+void TestEditorSelection::inspectorShowsTheMassADensityGives() {
+    openScene("incline.json");
+    interplay::SceneDocument* document = m_window->document();
+    auto* result = m_window->inspector()->findChild<QLabel*>("massResult");
+    auto* massMode = m_window->inspector()->findChild<QComboBox*>("massMode");
+    QVERIFY(result && massMode);
+    int body = -1;
+    for (int i = 0; i < document->bodyCount() && body < 0; ++i)
+        if (document->body(i).body.motion == simcore::MotionType::Dynamic && document->body(i).body.mass) body = i;
+    QVERIFY(body >= 0);
+    document->setSelectedBodies({body});
+    const float mass = *document->body(body).body.mass;
+    const float volume = simcore::volume(document->body(body).body.shape);
+    QCOMPARE(result->text(), QString("= %1 kg/m³").arg(mass / volume, 0, 'g', 4));
+
+    // Stated by density, the row shows the mass the engine gives the body.
+    massMode->setFocus();
+    QTest::keyClick(massMode, Qt::Key_Down);
+    QVERIFY(!document->body(body).body.mass);
+    const simcore::World* world = m_window->simulation()->world();
+    QVERIFY(world);
+    const float engineMass = world->mass(m_window->simulation()->bodyIds()[body]);
+    QCOMPARE(result->text(), QString("= %1 kg").arg(double(engineMass), 0, 'g', 4));
+    QVERIFY(std::abs(engineMass - mass) < 1e-4f * mass);  // switching kept the body as heavy
 }
 
 void TestEditorSelection::sceneTreeShowsWholeNames() {

@@ -140,6 +140,23 @@ void showSharedCheck(QCheckBox* box, std::optional<bool> shared) {
     }
 }
 
+// The mass a density gives (the shape's volume times it), or the density a mass gives; the total
+// for several bodies.
+QString massSummary(const std::vector<const simcore::SceneBody*>& dynamicBodies) {
+    if (dynamicBodies.empty()) return {};
+    const auto massOf = [](const simcore::SceneBody& b) {
+        return double(b.body.mass ? *b.body.mass : simcore::massProperties(b.body.shape, b.body.density).mass);
+    };
+    if (dynamicBodies.size() > 1) {
+        double total = 0.0;
+        for (const simcore::SceneBody* b : dynamicBodies) total += massOf(*b);
+        return InspectorPanel::tr("%1 kg in all").arg(total, 0, 'g', 4);
+    }
+    const simcore::SceneBody& body = *dynamicBodies.front();
+    if (!body.body.mass) return InspectorPanel::tr("= %1 kg").arg(massOf(body), 0, 'g', 4);
+    return InspectorPanel::tr("= %1 kg/m³").arg(massOf(body) / simcore::volume(body.body.shape), 0, 'g', 4);
+}
+
 QString motionLabel(simcore::MotionType motion) {
     switch (motion) {
     case simcore::MotionType::Dynamic: return InspectorPanel::tr("Dynamic");
@@ -164,7 +181,7 @@ InspectorPanel::InspectorPanel(SceneDocument* document, QWidget* parent)
                       editJoints(field, what, change, appliesTo);
                   },
                   [this](const QString& message) { showMessage(message); }),
-      m_name(new QLineEdit), m_shapeType(new QComboBox), m_hullInfo(new QLabel), m_motion(new QComboBox),
+      m_name(new QLineEdit), m_shapeType(new QComboBox), m_hullInfo(new QLabel), m_massResult(new QLabel), m_motion(new QComboBox),
       m_massMode(new QComboBox), m_color(new QPushButton), m_ccd(new QCheckBox(tr("Continuous collision (CCD)"))),
       m_jointName(new QLineEdit), m_jointType(new QLabel), m_jointBodies(new QLabel),
       m_limits(new QCheckBox(tr("Limits"))), m_motor(new QCheckBox(tr("Motor"))),
@@ -317,6 +334,8 @@ void InspectorPanel::createBodyRows() {
                              if (b.body.mass) b.body.mass = static_cast<float>(v);
                              else b.body.density = static_cast<float>(v);
                          });
+    m_massResult->setObjectName(QStringLiteral("massResult"));
+    m_bodyRows.addRow(QString(), m_massResult, isDynamic);
 
     // Material.
     m_bodyRows.addNumber(QStringLiteral("friction"), tr("Friction"), range(PropertyOwner::Body, "friction").min,
@@ -736,6 +755,7 @@ void InspectorPanel::refreshBodies() {
     // The field takes what a scene file accepts for what it holds (docs/scene-format.md).
     const simcore::NumberRange& massRange = range(PropertyOwner::Body, lead.body.mass ? "mass" : "density");
     numberField(QStringLiteral("mass"))->setRange(massRange.min, massRange.max);
+    m_massResult->setText(massSummary(dynamicBodies));
     if (lead.body.shape.hull) {
         m_hullInfo->setText(tr("%1 points, %2 faces")
                                 .arg(lead.body.shape.hull->sourcePoints().size())

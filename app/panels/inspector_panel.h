@@ -87,6 +87,7 @@ private:
     QLineEdit* m_name;
     QComboBox* m_shapeType;
     QLabel* m_hullInfo;
+    QLabel* m_massResult;  // what the given mass or density comes to
     QComboBox* m_motion;
     QComboBox* m_massMode;
     QPushButton* m_color;
