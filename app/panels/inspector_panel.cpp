@@ -2,6 +2,8 @@
 
 #include "app/document/body_templates.h"
 #include "app/document/undo_commands.h"
+#include "app/panels/hull_points_dialog.h"
+#include "app/panels/hull_points_model.h"
 #include "app/panels/number_field.h"
 #include "app/viewport/color_space.h"
 
@@ -117,6 +119,10 @@ bool isSlider(const simcore::SceneJoint& j) {
     return j.joint.type == simcore::JointType::Slider;
 }
 
+bool isHull(const simcore::SceneBody& b) {
+    return b.body.shape.type == simcore::ShapeType::ConvexHull;
+}
+
 bool isHingeOrSlider(const simcore::SceneJoint& j) {
     return isHinge(j) || isSlider(j);
 }
@@ -181,7 +187,7 @@ InspectorPanel::InspectorPanel(SceneDocument* document, QWidget* parent)
                       editJoints(field, what, change, appliesTo);
                   },
                   [this](const QString& message) { showMessage(message); }),
-      m_name(new QLineEdit), m_shapeType(new QComboBox), m_hullInfo(new QLabel), m_massResult(new QLabel), m_motion(new QComboBox),
+      m_name(new QLineEdit), m_shapeType(new QComboBox), m_hullInfo(new QLabel), m_editHullPoints(new QPushButton(tr("Edit Points…"))), m_massResult(new QLabel), m_motion(new QComboBox),
       m_massMode(new QComboBox), m_color(new QPushButton), m_ccd(new QCheckBox(tr("Continuous collision (CCD)"))),
       m_jointName(new QLineEdit), m_jointType(new QLabel), m_jointBodies(new QLabel),
       m_limits(new QCheckBox(tr("Limits"))), m_motor(new QCheckBox(tr("Motor"))),
@@ -294,9 +300,16 @@ void InspectorPanel::createBodyRows() {
                              return b.body.shape.halfHeight;
                          },
                          [](simcore::SceneBody& b, double v) { b.body.shape.halfHeight = static_cast<float>(v); });
-    m_bodyRows.addRow(tr("Hull"), m_hullInfo, [](const simcore::SceneBody& b) {
-        return b.body.shape.type == simcore::ShapeType::ConvexHull;
-    });
+    // The hull's size, and its points as a table to edit or import (one body at a time).
+    auto* hullRow = new QWidget;
+    auto* hullLayout = new QHBoxLayout(hullRow);
+    hullLayout->setContentsMargins(0, 0, 0, 0);
+    m_hullInfo->setWordWrap(true);  // the row must not widen the dock
+    hullLayout->addWidget(m_hullInfo, 1);
+    m_editHullPoints->setObjectName(QStringLiteral("editHullPoints"));
+    hullLayout->addWidget(m_editHullPoints);
+    m_bodyRows.addRow(tr("Hull"), hullRow, isHull);
+    connect(m_editHullPoints, &QPushButton::clicked, this, &InspectorPanel::editHullPoints);
 
     // Motion and mass.
     for (simcore::MotionType motion : kMotionTypes) m_motion->addItem(motionLabel(motion), static_cast<int>(motion));
@@ -756,6 +769,7 @@ void InspectorPanel::refreshBodies() {
     const simcore::NumberRange& massRange = range(PropertyOwner::Body, lead.body.mass ? "mass" : "density");
     numberField(QStringLiteral("mass"))->setRange(massRange.min, massRange.max);
     m_massResult->setText(massSummary(dynamicBodies));
+    m_editHullPoints->setEnabled(bodies.size() == 1);
     if (lead.body.shape.hull) {
         m_hullInfo->setText(tr("%1 points, %2 faces")
                                 .arg(lead.body.shape.hull->sourcePoints().size())
@@ -772,6 +786,22 @@ void InspectorPanel::refreshBodies() {
         m_color->setStyleSheet(QString());
     }
     showSharedCheck(m_ccd, sharedValue(bodies, [](const simcore::SceneBody& b) { return b.body.ccd; }));
+}
+
+void InspectorPanel::editHullPoints() {
+    const QList<int>& selection = m_document->selectedBodies();
+    if (selection.size() != 1 || !m_document->body(selection.first()).body.shape.hull) return;
+    const int index = selection.first();
+    auto* dialog = new HullPointsDialog(m_document->body(index).body.shape.hull->sourcePoints(), this);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(dialog, &QDialog::accepted, this, [this, dialog, index] {
+        const std::shared_ptr<const simcore::ConvexHull> hull = dialog->model()->hull().hull;
+        // The dialog is window-modal: the selection is still the body it was opened for.
+        if (!hull || m_document->selectedBodies() != QList<int>{index}) return;
+        editBodies(BodyField::Shape, tr("Hull Points"),
+                   [hull](simcore::SceneBody& b) { b.body.shape = simcore::Shape::convexHull(hull); }, isHull);
+    });
+    dialog->open();
 }
 
 void InspectorPanel::refreshJoints() {

@@ -75,6 +75,7 @@ private:
     void refreshJoints();
     void showMessage(const QString& message);
     void chooseColor();
+    void editHullPoints();
 
     SceneDocument* m_document;
     QLabel* m_header;
@@ -87,6 +88,7 @@ private:
     QLineEdit* m_name;
     QComboBox* m_shapeType;
     QLabel* m_hullInfo;
+    QPushButton* m_editHullPoints;
     QLabel* m_massResult;  // what the given mass or density comes to
     QComboBox* m_motion;
     QComboBox* m_massMode;
