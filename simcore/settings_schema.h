@@ -61,8 +61,8 @@ inline constexpr NumberRange kJointLength{0.0, 1e6, false, "m"};
 inline constexpr NumberRange kSpringHertz{0.0, 1e4, true, "Hz"};
 inline constexpr NumberRange kDampingRatio{0.0, 1e4};
 inline constexpr std::size_t kMaxHullPoints = 4096;
-// A compound's children: the mid-phase scans them as a list, and a compound-compound pair keeps a
-// flag per child pair (64 x 64 bytes at most).
+// A compound's children: the mid-phase scans them as a list, and a pair of compounds can hold a
+// contact per pair of children (64 x 64 at most).
 inline constexpr std::size_t kMaxCompoundChildren = 64;
 }  // namespace limits
 

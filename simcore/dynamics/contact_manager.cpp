@@ -95,13 +95,31 @@ Aabb subShapeWorldBounds(const BodyStorage& bodies, std::size_t i, std::uint32_t
     return worldBounds(subShape(shape, sub), subShapeTransform(shape, sub, bodies.transform(i)));
 }
 
+// The world box `box` seen from the frame `transform`: the bounds of its corners there.
+Aabb boundsInFrame(const Aabb& box, const Transform& transform) {
+    const Mat3 toLocal = glm::transpose(glm::mat3_cast(transform.rotation));
+    const Vec3 half = box.halfExtents();
+    Vec3 localHalf(0.0f);
+    for (int j = 0; j < 3; ++j) localHalf += glm::abs(toLocal[j]) * half[j];
+    return Aabb::fromCenterHalfExtents(toLocal * (box.center() - transform.position), localHalf);
+}
+
 // Calls visit(sub) for each sub-shape of body i whose tight world bounds overlap `box`, in index
-// order. A compound's children are few (limits::kMaxCompoundChildren): a scan beats a tree.
+// order. A compound's children are few (limits::kMaxCompoundChildren): a scan of their bounds in
+// the body frame against the box brought into that frame beats a tree, and skips computing the
+// world bounds of children that are far (a child that reaches into the box passes both tests).
 template <class Visit>
 void forEachSubShapeOverlapping(const BodyStorage& bodies, std::size_t i, const Aabb& box, Visit visit) {
-    const auto count = static_cast<std::uint32_t>(subShapeCount(bodies.shape[i]));
+    const Shape& shape = bodies.shape[i];
+    if (!hasSeveralSubShapes(shape)) {
+        if (bodies.bounds[i].overlaps(box)) visit(0u);
+        return;
+    }
+    const Aabb local = boundsInFrame(box, bodies.transform(i));
+    const auto count = static_cast<std::uint32_t>(subShapeCount(shape));
     for (std::uint32_t sub = 0; sub < count; ++sub)
-        if (subShapeWorldBounds(bodies, i, sub).overlaps(box)) visit(sub);
+        if (subShapeLocalBounds(shape, sub).overlaps(local) && subShapeWorldBounds(bodies, i, sub).overlaps(box))
+            visit(sub);
 }
 
 std::uint64_t subShapePairKey(std::uint32_t subShapeA, std::uint32_t subShapeB) {
