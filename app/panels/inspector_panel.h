@@ -87,6 +87,7 @@ private:
     QLineEdit* m_name;
     QComboBox* m_shapeType;
     QLabel* m_hullInfo;
+    QLabel* m_compoundInfo;  // a compound's children, read-only: editing them is a later step
     QComboBox* m_motion;
     QComboBox* m_massMode;
     QPushButton* m_color;
