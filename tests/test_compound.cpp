@@ -70,6 +70,7 @@ private slots:
     void bodyOriginStaysWhereTheUserPutIt();
     void tumblingInZeroGravityKeepsMomentumAndEnergy();
     void tableRestsOnItsLegsAndSleeps();
+    void legsShareTheWeightLikeOneBox();
     void dumbbellRestsOnTheTableOnBothBells();
     void rayHitsTheNearestChild();
     void fastCompoundDoesNotTunnelThroughAThinWall();
@@ -224,6 +225,42 @@ void TestCompound::tableRestsOnItsLegsAndSleeps() {
         ++touchingLegs;
     }
     QCOMPARE(touchingLegs, 4);
+}
+
+// Warm-started through its child contacts, the table at rest carries its weight through its four
+// legs: their impulses sum to a single box's of the same mass on the same floor (1 %), and by
+// symmetry each leg takes a quarter (5 %: the four contacts are solved one after another).
+void TestCompound::legsShareTheWeightLikeOneBox() {
+    WorldSettings settings;
+    settings.sleep.enabled = false;
+    const auto floorImpulses = [&settings](const Shape& shape, float mass, float height, std::vector<float>* perContact) {
+        World world(settings);
+        world.createBody(floorBody());
+        BodyCreationSettings b;
+        b.shape = shape;
+        b.mass = mass;
+        b.position = Vec3(0.0f, height, 0.0f);
+        const BodyId id = world.createBody(b);
+        for (int i = 0; i < 120; ++i) world.step();
+        float sum = 0.0f;
+        for (std::size_t c = 0; c < world.contactCount(); ++c) {
+            const ContactInfo contact = world.contact(c);
+            if (contact.bodyA != id && contact.bodyB != id) continue;
+            float impulse = 0.0f;
+            for (int k = 0; k < contact.pointCount; ++k) impulse += contact.normalImpulses[k];
+            if (perContact && contact.pointCount > 0) perContact->push_back(impulse);
+            sum += impulse;
+        }
+        return sum;
+    };
+    std::vector<float> legs;
+    const float table = floorImpulses(::table(), 20.0f, 0.0f, &legs);  // its origin is on the floor
+    const float box = floorImpulses(Shape::box(Vec3(0.5f, 0.35f, 0.3f)), 20.0f, 0.35f, nullptr);
+    qInfo("floor impulse: table %.6f N s on %zu legs, box %.6f N s", table, legs.size(), box);
+    QVERIFY2(std::abs(table / box - 1.0f) < 0.01f, qPrintable(QString("table / box = %1").arg(table / box)));
+    QCOMPARE(legs.size(), std::size_t(4));
+    for (const float leg : legs)
+        QVERIFY2(std::abs(leg / (0.25f * table) - 1.0f) < 0.05f, qPrintable(QString("a leg carries %1").arg(leg / table)));
 }
 
 // A dumbbell lying across the table top touches it with both bells: contacts between a child of
