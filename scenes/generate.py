@@ -21,7 +21,8 @@ the benchmark measures the engine at its defaults, as it does Bullet at Bullet's
 they are measurement inputs (bench/bullet_compare.cpp reads them).
 
 Demo scenes (scenes/): the same four with colours, plus tower40 (with the stiffer contacts a stack
-that tall needs), mixed_rain, incline, newtons_cradle, heavy_on_light and dominoes; and the joint
+that tall needs), mixed_rain, incline, newtons_cradle, heavy_on_light and dominoes; the compound
+demo table_and_dumbbells; and the joint
 demos chain20, hinge_door, ragdoll and pendulums. Choices that a reader could wonder about are stated in the function
 that builds each scene and, where it helps in the editor, in the body names.
 """
@@ -502,6 +503,41 @@ def heavy_on_light():
     return scene(settings(sleep=False), bodies)
 
 
+def compound(children):
+    """children: (shape, position[, orientation]) in the body frame."""
+    out = []
+    for c in children:
+        child = {"shape": c[0], "position": list(c[1])}
+        if len(c) > 2:
+            child["orientation"] = c[2]
+        out.append(child)
+    return {"type": "compound", "children": out}
+
+
+def table_and_dumbbells():
+    """Compound bodies: a table (a top on four legs, one body of five boxes) with three dumbbells
+    (a capsule bar between two spheres) dropped across its top, and a fourth rolling off its edge
+    onto the floor. Each contact is one child pair: the table stands on four leg contacts, a
+    dumbbell lies on its two bells. The body origins are where one would put them: the table's
+    on the floor under its middle, a dumbbell's at its bar's centre."""
+    bodies = [ground(half=(20, 0.5, 20), color=GROUND_COLOR)]
+    legs = [(box(0.05, 0.35, 0.05), (x, 0.35, z)) for x in (-0.7, 0.7) for z in (-0.4, 0.4)]
+    table = compound([(box(0.8, 0.03, 0.5), (0, 0.73, 0))] + legs)
+    bodies.append(body("table (top and four legs)", table, [0, 0, 0], density=700, friction=0.6,
+                       color=[0.55, 0.36, 0.2]))
+    bar_along_x = quat_axis_angle((0, 0, 1), math.pi / 2)
+    dumbbell = compound([(capsule(0.03, 0.25), (0, 0, 0)), (sphere(0.09), (0, -0.3, 0)),
+                         (sphere(0.09), (0, 0.3, 0))])
+    for i, (x, z, turn) in enumerate(((-0.35, -0.2, 0.0), (0.3, 0.05, 0.5), (-0.1, 0.3, -0.3))):
+        q = quat_mul(quat_axis_angle((0, 1, 0), turn), bar_along_x)
+        bodies.append(body("dumbbell %d" % (i + 1), dumbbell, [x, 0.76 + 0.09 + 0.05 + 0.25 * i, z],
+                           orientation=q, density=7800, friction=0.6, color=hsv(0.6 + 0.1 * i)))
+    bodies.append(body("dumbbell rolling off", dumbbell, [0.6, 0.76 + 0.09 + 0.01, -0.3],
+                       orientation=quat_axis_angle((1, 0, 0), math.pi / 2), density=7800, friction=0.6,
+                       linear_velocity=[0, 0, -1.5], color=hsv(0.95)))
+    return scene(settings(), bodies)
+
+
 def dominoes():
     """32 dominoes (half extents 0.05 x 0.5 x 0.25: 0.1 thick, 1 high, 0.5 wide) 0.55 m apart along
     a path: 8 straight along +x, a half circle of radius 2.2, then back along -x. Each stands upright,
@@ -700,6 +736,7 @@ def all_scenes():
         "newtons_cradle.json": newtons_cradle(),
         "heavy_on_light.json": heavy_on_light(),
         "dominoes.json": dominoes(),
+        "table_and_dumbbells.json": table_and_dumbbells(),
         "chain20.json": chain20(),
         "hinge_door.json": hinge_door(),
         "ragdoll.json": ragdoll(),

@@ -245,7 +245,7 @@ constexpr PropertyInfo kProperties[] = {
     {P::Body, "rollingResistance", L::kRollingResistance, "coefficient of rolling resistance (default 0)"},
     {P::Body, "ccd", std::nullopt, "continuous collision: sweep the body so it does not tunnel"},
     {P::Body, "color", L::kColor, "linear RGB for the viewer"},
-    {P::Shape, "type", std::nullopt, "box, sphere, capsule, cylinder or convexHull"},
+    {P::Shape, "type", std::nullopt, "box, sphere, capsule, cylinder, convexHull or compound"},
     {P::Box, "halfExtents", L::kSize, "half the box's size along each axis"},
     {P::Sphere, "radius", L::kSize, "the sphere's radius"},
     {P::Capsule, "radius", L::kSize, "radius of the capsule's caps and body"},
@@ -253,6 +253,10 @@ constexpr PropertyInfo kProperties[] = {
     {P::Cylinder, "radius", L::kSize, "the cylinder's radius"},
     {P::Cylinder, "halfHeight", L::kSize, "half the cylinder's height, along local Y"},
     {P::ConvexHull, "points", L::kCoordinate, "4 to 4096 points spanning a volume, in the body frame"},
+    {P::Compound, "children", std::nullopt, "1 to 64 convex child shapes, each placed in the body frame"},
+    {P::CompoundChild, "shape", std::nullopt, "the child's shape: any convex shape (compounds do not nest)"},
+    {P::CompoundChild, "position", L::kCoordinate, "the child's origin in the body frame (default 0)"},
+    {P::CompoundChild, "orientation", L::kQuaternionComponent, "unit quaternion [w, x, y, z] in the body frame"},
     {P::Joint, "name", std::nullopt, "the joint's name"},
     {P::Joint, "type", std::nullopt, "ball, hinge, slider, fixed or distance"},
     {P::Joint, "bodyA", std::nullopt, "name of the first body"},
@@ -282,7 +286,7 @@ constexpr PropertyInfo kProperties[] = {
 };
 
 bool isShapeType(PropertyOwner owner) {
-    return owner >= P::Box && owner <= P::ConvexHull;
+    return owner >= P::Box && owner <= P::Compound;
 }
 bool isJointType(PropertyOwner owner) {
     return owner >= P::Hinge;
@@ -313,6 +317,8 @@ std::string_view propertyOwnerName(PropertyOwner owner) {
         case P::Capsule: return "capsule";
         case P::Cylinder: return "cylinder";
         case P::ConvexHull: return "convexHull";
+        case P::Compound: return "compound";
+        case P::CompoundChild: return "compoundChild";
         case P::Joint: return "joint";
         case P::Hinge: return "hinge";
         case P::Slider: return "slider";

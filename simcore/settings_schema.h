@@ -61,6 +61,9 @@ inline constexpr NumberRange kJointLength{0.0, 1e6, false, "m"};
 inline constexpr NumberRange kSpringHertz{0.0, 1e4, true, "Hz"};
 inline constexpr NumberRange kDampingRatio{0.0, 1e4};
 inline constexpr std::size_t kMaxHullPoints = 4096;
+// A compound's children: the mid-phase scans them as a list, and a pair of compounds can hold a
+// contact per pair of children (64 x 64 at most).
+inline constexpr std::size_t kMaxCompoundChildren = 64;
 }  // namespace limits
 
 // ---- world settings ----
@@ -99,10 +102,12 @@ const SettingInfo* findSetting(std::string_view key);  // null for an unknown ke
 // ---- body, shape and joint properties ----
 
 // What a property belongs to. Each joint type's and shape type's keys come on top of the
-// common ones (Joint, Shape).
-enum class PropertyOwner { Body, Shape, Box, Sphere, Capsule, Cylinder, ConvexHull, Joint, Hinge, Slider, Distance };
+// common ones (Joint, Shape). CompoundChild is one entry of a compound's "children".
+enum class PropertyOwner {
+    Body, Shape, Box, Sphere, Capsule, Cylinder, ConvexHull, Compound, CompoundChild, Joint, Hinge, Slider, Distance
+};
 
-// "body", "shape", "box", ..., "joint", "hinge", "slider", "distance": qualifies a key in docs and
+// "body", "shape", "box", ..., "compound", "compoundChild", "joint", "hinge", "slider", "distance": qualifies a key in docs and
 // tests ("hinge.limits.lower").
 std::string_view propertyOwnerName(PropertyOwner owner);
 

@@ -116,6 +116,13 @@ private:
             {"error at /bodies/0/shape/points: cannot build a convex hull"});
         row("hull point not a triple", v1(body(R"({"type": "convexHull", "points": [[0,0,0], [1,0,0], [0,1,0], [0,0]]})")),
             {"error at /bodies/0/shape/points/3: expected 3 numbers, got 2"});
+        row("compound child radius", v1(body(R"({"type": "compound", "children": [{"shape": {"type": "sphere", "radius": 1}},
+               {"shape": {"type": "sphere", "radius": 0}}]})")),
+            {"error at /bodies/0/shape/children/1/shape/radius: "});
+        row("compound nested", v1(body(R"({"type": "compound", "children": [{"shape": {"type": "compound", "children": []}}]})")),
+            {"error at /bodies/0/shape/children/0/shape/type: ", "compounds do not nest"});
+        row("compound without children", v1(body(R"({"type": "compound", "children": []})")),
+            {"error at /bodies/0/shape/children: a compound has 1 to 64 children, got 0"});
 
         // Body properties.
         row("mass zero", v1(body(kSphere, R"("mass": 0)")), {"error at /bodies/0/mass: mass must be positive, got 0"});

@@ -3,6 +3,7 @@
 
 #include "simcore/io/scene.h"
 #include "simcore/io/scene_io.h"
+#include "simcore/shapes/compound_shape.h"
 
 #include <QtTest>
 
@@ -257,6 +258,36 @@ private slots:
         QVERIFY2(loaded.ok(), describe(loaded.diagnostics).c_str());
         QVERIFY2(loaded.diagnostics.empty(), describe(loaded.diagnostics).c_str());
         compareScenes(original, *loaded.scene);
+        QCOMPARE(serializeScene(*loaded.scene), text);
+    }
+
+    // A compound's children keep every bit of their sizes and poses through save and load, and a
+    // second save is byte-identical.
+    void compoundRoundTripIsBitExact() {
+        const Quat turned = glm::normalize(Quat(0.9f, 0.1f, -1.0f / 3.0f, 0.2f));
+        std::vector<CompoundChild> children{
+            {Shape::box(Vec3(0.1f, 1.0f / 3.0f, 2.5e-3f)), Transform{Vec3(1e-7f, -0.3f, 12345.679f), turned}},
+            {Shape::cylinder(0.7f, 1.0f / 7.0f), Transform{Vec3(0.0f, 0.1f, 0.0f), Quat(1.0f, 0.0f, 0.0f, 0.0f)}}};
+        Scene scene;
+        SceneBody body;
+        body.body.name = "compound";
+        body.body.shape = Shape::compoundOf(std::make_shared<const CompoundShape>(children));
+        scene.bodies.push_back(body);
+        const std::string text = serializeScene(scene);
+        const SceneLoadResult loaded = parseScene(text, "compound.json");
+        QVERIFY2(loaded.ok() && loaded.diagnostics.empty(), describe(loaded.diagnostics).c_str());
+        const Shape& shape = loaded.scene->bodies.front().body.shape;
+        QVERIFY(shape.type == ShapeType::Compound && shape.compound);
+        QCOMPARE(shape.compound->size(), children.size());
+        for (std::size_t i = 0; i < children.size(); ++i) {
+            const CompoundChild& child = shape.compound->children()[i];
+            QVERIFY(child.shape.type == children[i].shape.type);
+            QVERIFY(sameBits(child.shape.halfExtents, children[i].shape.halfExtents));
+            QVERIFY(sameBits(child.shape.radius, children[i].shape.radius));
+            QVERIFY(sameBits(child.shape.halfHeight, children[i].shape.halfHeight));
+            QVERIFY(sameBits(child.pose.position, children[i].pose.position));
+            QVERIFY(sameBits(child.pose.rotation, children[i].pose.rotation));
+        }
         QCOMPARE(serializeScene(*loaded.scene), text);
     }
 

@@ -341,8 +341,9 @@ void TestSettingsSchema::inspectorFieldsUseTheSchemaRanges() {
                        QString::fromLatin1(p.key.data(), static_cast<qsizetype>(p.key.size()));
     }
     // What the Inspector edits otherwise: the orientation as Euler angles, the colour in a colour
-    // dialog; hull points are not edited.
-    const QSet<QString> notNumberFields{"body.orientation", "body.color", "convexHull.points"};
+    // dialog; hull points and a compound's children (listed read-only) are not edited.
+    const QSet<QString> notNumberFields{"body.orientation", "body.color", "convexHull.points",
+                                        "compoundChild.position", "compoundChild.orientation"};
     QCOMPARE(edited, numeric - notNumberFields);
     QVERIFY(numeric.contains(notNumberFields));
 

@@ -10,6 +10,7 @@
 
 #include "simcore/io/scene_io.h"
 #include "simcore/settings_schema.h"
+#include "simcore/shapes/compound_shape.h"
 
 #include <QCheckBox>
 #include <QColorDialog>
@@ -154,7 +155,9 @@ InspectorPanel::InspectorPanel(SceneDocument* document, QWidget* parent)
                       editJoints(field, what, change, appliesTo);
                   },
                   [this](const QString& message) { showMessage(message); }),
-      m_name(new QLineEdit), m_shapeType(new QComboBox), m_hullInfo(new QLabel), m_editHullPoints(new QPushButton(tr("Edit Points…"))), m_massResult(new QLabel), m_motion(new QComboBox),
+      m_name(new QLineEdit), m_shapeType(new QComboBox), m_hullInfo(new QLabel),
+      m_editHullPoints(new QPushButton(tr("Edit Points…"))), m_compoundInfo(new QLabel), m_massResult(new QLabel),
+      m_motion(new QComboBox),
       m_massMode(new QComboBox), m_color(new QPushButton), m_ccd(new QCheckBox(tr("Continuous collision (CCD)"))),
       m_jointName(new QLineEdit), m_jointType(new QLabel), m_jointBodies(new QLabel),
       m_limits(new QCheckBox(tr("Limits"))), m_motor(new QCheckBox(tr("Motor"))),
@@ -277,6 +280,11 @@ void InspectorPanel::createBodyRows() {
     hullLayout->addWidget(m_editHullPoints);
     m_bodyRows.addRow(tr("Hull"), hullRow, isHull);
     connect(m_editHullPoints, &QPushButton::clicked, this, &InspectorPanel::editHullPoints);
+    m_compoundInfo->setObjectName(QStringLiteral("compoundChildren"));
+    m_compoundInfo->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_bodyRows.addRow(tr("Children"), m_compoundInfo, [](const simcore::SceneBody& b) {
+        return b.body.shape.type == simcore::ShapeType::Compound;
+    });
 
     // Motion and mass.
     for (simcore::MotionType motion : kMotionTypes) m_motion->addItem(motionLabel(motion), static_cast<int>(motion));
@@ -534,6 +542,19 @@ void InspectorPanel::refreshBodies() {
         m_hullInfo->setText(tr("%1 points, %2 faces")
                                 .arg(lead.body.shape.hull->sourcePoints().size())
                                 .arg(lead.body.shape.hull->faces().size()));
+    }
+    if (lead.body.shape.compound) {
+        // One line per child: its type and where it sits in the body frame.
+        QStringList lines;
+        for (const simcore::CompoundChild& child : lead.body.shape.compound->children()) {
+            const simcore::Vec3& p = child.pose.position;
+            lines << tr("%1 at (%2, %3, %4)")
+                         .arg(shapeDisplayName(child.shape.type))
+                         .arg(p.x, 0, 'g', 4)
+                         .arg(p.y, 0, 'g', 4)
+                         .arg(p.z, 0, 'g', 4);
+        }
+        m_compoundInfo->setText(lines.join(QLatin1Char('\n')));
     }
     const auto color = sharedValue(bodies, [](const simcore::SceneBody& b) { return b.color; });
     if (color && *color) {

@@ -89,7 +89,8 @@ private:
     QComboBox* m_shapeType;
     QLabel* m_hullInfo;
     QPushButton* m_editHullPoints;
-    QLabel* m_massResult;  // what the given mass or density comes to
+    QLabel* m_compoundInfo;  // a compound's children, read-only: editing them is a later step
+    QLabel* m_massResult;    // what the given mass or density comes to
     QComboBox* m_motion;
     QComboBox* m_massMode;
     QPushButton* m_color;

@@ -16,6 +16,13 @@ glm::mat4 modelMatrix(const simcore::Transform& t) {
     return m;
 }
 
+// The outline box of a convex shape: its local bounds, kept from collapsing to nothing.
+void setOutlineBounds(const simcore::Shape& shape, glm::vec3& center, glm::vec3& halfSize) {
+    const simcore::Aabb bounds = simcore::localBounds(shape);
+    center = bounds.center();
+    halfSize = glm::max(0.5f * (bounds.max - bounds.min), glm::vec3(1e-4f));
+}
+
 }  // namespace
 
 glm::vec3 BodyBatches::displayColor(std::size_t sceneIndex, const std::optional<glm::vec3>& authored,
@@ -43,14 +50,19 @@ void BodyBatches::rebuild(const SimulationController& simulation,
         if (!world->contains(ids[i])) continue;
         const simcore::Shape& shape = world->shape(ids[i]);
         const std::optional<glm::vec3> authoredColor = i < colors.size() ? colors[i] : std::nullopt;
-        const simcore::Aabb bounds = simcore::localBounds(shape);
         BodyDraw draw;
         draw.id = ids[i];
         draw.sceneIndex = static_cast<int>(i) < authored ? static_cast<int>(i) : -1;
-        draw.mesh = meshFor(shape);
         draw.color = displayColor(i, authoredColor, world->motionType(ids[i]));
-        draw.localCenter = bounds.center();
-        draw.localHalfSize = glm::max(0.5f * (bounds.max - bounds.min), glm::vec3(1e-4f));
+        for (std::size_t sub = 0; sub < simcore::subShapeCount(shape); ++sub) {
+            const simcore::Shape& piece = simcore::subShape(shape, sub);
+            PartDraw part;
+            part.mesh = meshFor(piece);
+            if (shape.type == simcore::ShapeType::Compound)
+                part.pose = modelMatrix(simcore::subShapeTransform(shape, sub, simcore::Transform{}));
+            setOutlineBounds(piece, part.localCenter, part.localHalfSize);
+            draw.parts.push_back(part);
+        }
         if (draw.id.index >= m_drawOfSlot.size()) m_drawOfSlot.resize(draw.id.index + 1, -1);
         m_drawOfSlot[draw.id.index] = static_cast<int>(m_draws.size());
         m_draws.push_back(draw);
@@ -73,15 +85,19 @@ void BodyBatches::beginFrame(std::size_t meshCount, const QList<int>& selectedBo
 
 void BodyBatches::drawBody(const simcore::DebugBody& body) {
     const BodyDraw* draw = drawOf(body.id);
-    if (!draw || draw->mesh < 0 || static_cast<std::size_t>(draw->mesh) >= m_instancesByMesh.size()) return;
-    const glm::mat4 model = modelMatrix(body.transform);
+    if (!draw) return;
+    const glm::mat4 bodyModel = modelMatrix(body.transform);
     const bool asleep = body.motion == simcore::MotionType::Dynamic && !body.awake;
     const glm::vec3 color = m_tintSleeping && asleep
                                 ? glm::mix(draw->color, look::srgb(look::kSleepingTint), look::kSleepingTintAmount)
                                 : draw->color;
-    m_instancesByMesh[static_cast<std::size_t>(draw->mesh)].push_back({model, color});
-    if (draw->sceneIndex >= 0 && m_selectedBodies.contains(draw->sceneIndex))
-        m_outlined.push_back({draw->mesh, model, draw->localCenter, draw->localHalfSize});
+    const bool selected = draw->sceneIndex >= 0 && m_selectedBodies.contains(draw->sceneIndex);
+    for (const PartDraw& part : draw->parts) {
+        if (part.mesh < 0 || static_cast<std::size_t>(part.mesh) >= m_instancesByMesh.size()) continue;
+        const glm::mat4 model = part.pose ? bodyModel * *part.pose : bodyModel;
+        m_instancesByMesh[static_cast<std::size_t>(part.mesh)].push_back({model, color});
+        if (selected) m_outlined.push_back({part.mesh, model, part.localCenter, part.localHalfSize});
+    }
 }
 
 }  // namespace interplay

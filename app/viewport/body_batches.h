@@ -1,7 +1,9 @@
 #pragma once
 // The bodies of the running world as the renderer draws them: each body's mesh and colour, chosen
 // when the world is (re)built, and each frame the instances gathered from World::draw's body
-// callbacks, batched by mesh, with the selected bodies to outline.
+// callbacks, batched by mesh, with the selected bodies to outline. A compound is drawn child by
+// child, each with its convex shape's mesh placed by the child's pose: the same look, and equal
+// children of many compounds share one mesh.
 
 #include "app/viewport/renderer.h"
 
@@ -38,13 +40,18 @@ public:
                                   simcore::MotionType motion);
 
 private:
+    // One convex piece of a body: the body's whole shape, or one child of a compound.
+    struct PartDraw {
+        int mesh = -1;
+        std::optional<glm::mat4> pose;  // a compound child's place in the body frame; none for a whole shape
+        glm::vec3 localCenter{0.0f};    // of the piece's local bounds (m), for the outline
+        glm::vec3 localHalfSize{0.5f};  // of the piece's local bounds (m)
+    };
     struct BodyDraw {
         simcore::BodyId id;
         int sceneIndex = -1;  // -1 for a body thrown in while running
-        int mesh = -1;
+        std::vector<PartDraw> parts;
         glm::vec3 color{1.0f};
-        glm::vec3 localCenter{0.0f};    // of the shape's local bounds (m), for the outline
-        glm::vec3 localHalfSize{0.5f};  // of the shape's local bounds (m)
     };
     const BodyDraw* drawOf(simcore::BodyId id) const;
 

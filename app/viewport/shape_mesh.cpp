@@ -147,6 +147,7 @@ ShapeMesh buildShapeMesh(const simcore::Shape& shape, const MeshDetail& detail) 
     case simcore::ShapeType::Capsule: return capsuleMesh(shape.radius, shape.halfHeight, detail);
     case simcore::ShapeType::Cylinder: return cylinderMesh(shape.radius, shape.halfHeight, detail);
     case simcore::ShapeType::ConvexHull: return shape.hull ? hullMesh(*shape.hull) : ShapeMesh{};
+    case simcore::ShapeType::Compound: break;  // drawn child by child (body_batches.h)
     }
     return {};
 }

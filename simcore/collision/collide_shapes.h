@@ -28,6 +28,9 @@
 
 namespace simcore {
 
+// Convex shapes only: a compound collides child pair by child pair through the contact manager's
+// mid-phase (contact_manager.h); given one, this reports no contact.
+//
 // Fills `out` with the contact points of A and B whose separation is <= speculativeDistance
 // (normal unit, from A to B; at most kMaxManifoldPoints) and returns true when there is at least
 // one. `out` is reset on every call. Allocates nothing.

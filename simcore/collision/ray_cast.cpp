@@ -8,6 +8,8 @@
 
 #include "simcore/collision/ray_cast.h"
 
+#include "simcore/shapes/compound_shape.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -194,6 +196,21 @@ std::optional<LocalHit> castHull(const LocalRay& ray, const ConvexHull& hull) {
 }  // namespace
 
 std::optional<RayCastHit> rayCastShape(const Shape& shape, const Transform& transform, const RayCastInput& ray) {
+    if (shape.type == ShapeType::Compound) {
+        // The nearest child's entry: each child is cast with the limit cut to the best hit so far.
+        std::optional<RayCastHit> nearest;
+        if (!shape.compound) return nearest;
+        RayCastInput clipped = ray;
+        for (std::uint32_t i = 0; i < shape.compound->size(); ++i) {
+            const CompoundChild& child = shape.compound->children()[i];
+            if (auto hit = rayCastShape(child.shape, childTransform(child, transform), clipped)) {
+                hit->subShape = i;
+                clipped.maxFraction = hit->fraction;
+                nearest = hit;
+            }
+        }
+        return nearest;
+    }
     if (!isFinite(ray.origin) || !isFinite(ray.direction) || !(ray.maxFraction >= 0.0f)) return std::nullopt;
 
     // Length computed on the direction scaled by its largest component, so that neither tiny nor
@@ -221,6 +238,7 @@ std::optional<RayCastHit> rayCastShape(const Shape& shape, const Transform& tran
         case ShapeType::ConvexHull:
             if (shape.hull) hit = castHull(local, *shape.hull);
             break;
+        case ShapeType::Compound: break;  // cast child by child above
     }
     if (!hit) return std::nullopt;
 

@@ -7,6 +7,8 @@
 //   - The ray is the segment origin + t * direction, t in [0, maxFraction]; the hit is reported as
 //     that t (a fraction of `direction`, not a distance), so a ray from A with direction B - A
 //     reports the share of the way from A to B.
+//   - A compound reports its nearest child's entry; a ray from inside one child can still hit
+//     another.
 //   - A ray whose origin lies inside the shape reports no hit: picking from inside a body is not
 //     meaningful, and the editor casts from the camera, which is outside. An origin exactly on the
 //     surface hits at fraction 0 when the ray heads in, and misses when it heads out.
@@ -17,6 +19,7 @@
 #include "simcore/math/math.h"
 #include "simcore/shapes/shape.h"
 
+#include <cstdint>
 #include <optional>
 
 namespace simcore {
@@ -31,6 +34,7 @@ struct RayCastHit {
     float fraction = 0.0f;  // t of the entry point, in [0, maxFraction]
     Vec3 point{0.0f};       // world frame, origin + fraction * direction
     Vec3 normal{0.0f};      // world frame, unit, outward at the hit (dot(normal, direction) <= 0)
+    std::uint32_t subShape = 0;  // the sub-shape hit (shape.h): a compound's child, 0 for a convex shape
 };
 
 // First point where the ray enters `shape` placed by `transform`, or nothing.

@@ -1,6 +1,7 @@
 #include "simcore/collision/time_of_impact.h"
 
 #include "simcore/collision/gjk.h"
+#include "simcore/shapes/compound_shape.h"
 
 #include <algorithm>
 #include <cmath>
@@ -29,10 +30,46 @@ float reachFromCenter(const Shape& shape, const Vec3& localCenter) {
     return glm::length(far);
 }
 
+// The sweep of sub-shape `index` of a body on `sweep`: the same motion seen from the sub-shape's
+// frame. With the child at pose (p, q) the body transform (c - R l, R) places it at
+// (c - R (l - p), R q), so its centre offset is q^-1 (l - p), and slerp commutes with the fixed q.
+Sweep subShapeSweep(const Shape& shape, std::size_t index, const Sweep& sweep) {
+    if (shape.type != ShapeType::Compound) return sweep;
+    const Transform& pose = shape.compound->children()[index].pose;
+    return {pose.rotateInverse(sweep.localCenter - pose.position), sweep.center0, sweep.center1,
+            sweep.rotation0 * pose.rotation, sweep.rotation1 * pose.rotation};
+}
+
+TimeOfImpact convexTimeOfImpact(const Shape& a, const Sweep& sweepA, const Shape& b, const Sweep& sweepB, float target,
+                                float tolerance);
+
 }  // namespace
 
 TimeOfImpact timeOfImpact(const Shape& a, const Sweep& sweepA, const Shape& b, const Sweep& sweepB, float target,
                           float tolerance) {
+    if (isConvex(a.type) && isConvex(b.type)) return convexTimeOfImpact(a, sweepA, b, sweepB, target, tolerance);
+    // Through the sub-shape pairs: the earliest hit of any; otherwise touching if any pair touches.
+    TimeOfImpact first;
+    bool touching = false;
+    for (std::size_t i = 0; i < subShapeCount(a); ++i) {
+        const Sweep childSweepA = subShapeSweep(a, i, sweepA);
+        for (std::size_t j = 0; j < subShapeCount(b); ++j) {
+            const TimeOfImpact toi = convexTimeOfImpact(subShape(a, i), childSweepA, subShape(b, j),
+                                                        subShapeSweep(b, j, sweepB), target, tolerance);
+            if (toi.outcome == TimeOfImpact::Outcome::Hit && (first.outcome != TimeOfImpact::Outcome::Hit ||
+                                                              toi.fraction < first.fraction))
+                first = toi;
+            touching = touching || toi.outcome == TimeOfImpact::Outcome::InitiallyTouching;
+        }
+    }
+    if (first.outcome != TimeOfImpact::Outcome::Hit && touching) return {TimeOfImpact::Outcome::InitiallyTouching, 0.0f};
+    return first;
+}
+
+namespace {
+
+TimeOfImpact convexTimeOfImpact(const Shape& a, const Sweep& sweepA, const Shape& b, const Sweep& sweepB, float target,
+                                float tolerance) {
     // Bound on how fast any point of A approaches any point of B along a unit direction n, per unit
     // of sweep fraction: the centres' relative motion along n plus each body's turn times its reach.
     const Vec3 relativeMotion = (sweepB.center1 - sweepB.center0) - (sweepA.center1 - sweepA.center0);
@@ -60,5 +97,7 @@ TimeOfImpact timeOfImpact(const Shape& a, const Sweep& sweepA, const Shape& b, c
     // still before the first contact.
     return {TimeOfImpact::Outcome::Hit, fraction, normal};
 }
+
+}  // namespace
 
 }  // namespace simcore

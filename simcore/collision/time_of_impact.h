@@ -3,7 +3,8 @@
 // 1996): at the current time the GJK distance d and normal n bound how soon the shapes can touch,
 // since no point of either moves faster along n than its linear speed plus spin times reach; so
 // time can safely advance by d / (that bound). Repeating converges on the first contact from
-// outside and never steps past it, however thin the shapes or fast the motion.
+// outside and never steps past it, however thin the shapes or fast the motion. A compound is
+// swept child by child (each child pair in turn; the earliest hit counts).
 
 #include "simcore/math/math.h"
 #include "simcore/shapes/shape.h"

@@ -2,6 +2,7 @@
 
 #include "simcore/collision/collide_shapes.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace simcore {
@@ -52,48 +53,107 @@ std::array<ContactImpulse, kMaxManifoldPoints> matchImpulses(const ContactManifo
     return impulses;
 }
 
-// The contact's material from its bodies' (dense indices a and b).
+// The contact's material from its bodies' (dense indices a and b); rolling on the sub-shapes that touch.
 void combineMaterials(Contact& contact, const BodyStorage& bodies, std::size_t a, std::size_t b) {
     contact.friction = combineFriction(bodies.friction[a], bodies.friction[b]);
     contact.restitution = combineRestitution(bodies.restitution[a], bodies.restitution[b]);
-    contact.rollingLever = combineRollingResistance(bodies.rollingResistance[a], rollingRadius(bodies.shape[a]),
-                                                    bodies.rollingResistance[b], rollingRadius(bodies.shape[b]));
+    contact.rollingLever = combineRollingResistance(
+        bodies.rollingResistance[a], rollingRadius(subShape(bodies.shape[a], contact.subShapeA)),
+        bodies.rollingResistance[b], rollingRadius(subShape(bodies.shape[b], contact.subShapeB)));
 }
 
-// The narrow phase for one contact; false when its bodies' fat boxes no longer overlap and it is to go.
-bool refreshManifold(Contact& contact, const BodyStorage& bodies, const BroadPhase& broadPhase, float speculativeDistance,
-                     float timeStep) {
-    auto isAwakeDynamic = [&bodies](std::size_t i) {
-        return bodies.motion[i] == MotionType::Dynamic && bodies.awake[i];
-    };
-    const std::size_t a = bodies.denseIndexOfSlot(contact.slotA);
-    const std::size_t b = bodies.denseIndexOfSlot(contact.slotB);
-    if (!isAwakeDynamic(a) && !isAwakeDynamic(b)) return true;  // a sleeping pair keeps its manifold, ready for when it wakes
-    if (!broadPhase.testOverlap(bodies.proxy[a], bodies.proxy[b])) return false;
+// Whether a body collides through its sub-shapes one pair at a time (a compound); a convex shape
+// is its own single sub-shape and collides whole.
+bool hasSeveralSubShapes(const Shape& shape) { return !isConvex(shape.type); }
 
-    // Speculative margin: how far the surfaces can approach within the step (relative linear
-    // speed plus each body's spin times its reach), so a fast impact is met at contact rather
-    // than discovered a step later deep inside, where pushing out adds energy.
+bool isAwakeDynamic(const BodyStorage& bodies, std::size_t i) {
+    return bodies.motion[i] == MotionType::Dynamic && bodies.awake[i];
+}
+
+// Speculative margin: how far the surfaces can approach within the step (relative linear speed
+// plus each body's spin times its reach), so a fast impact is met at contact rather than
+// discovered a step later deep inside, where pushing out adds energy.
+float speculativeMargin(const BodyStorage& bodies, std::size_t a, std::size_t b, float speculativeDistance,
+                        float timeStep) {
     const float approachSpeed =
         glm::length(bodies.linearVelocity[b] - bodies.linearVelocity[a]) +
         glm::length(bodies.angularVelocity[a]) * glm::length(bodies.bounds[a].halfExtents()) +
         glm::length(bodies.angularVelocity[b]) * glm::length(bodies.bounds[b].halfExtents());
-    const float margin = speculativeDistance + timeStep * approachSpeed;
+    return speculativeDistance + timeStep * approachSpeed;
+}
 
+Aabb grown(Aabb box, float margin) {
+    box.min -= Vec3(margin);
+    box.max += Vec3(margin);
+    return box;
+}
+
+// A sub-shape's tight world bounds; a convex body's are the body's, already current this step.
+Aabb subShapeWorldBounds(const BodyStorage& bodies, std::size_t i, std::uint32_t sub) {
+    const Shape& shape = bodies.shape[i];
+    if (!hasSeveralSubShapes(shape)) return bodies.bounds[i];
+    return worldBounds(subShape(shape, sub), subShapeTransform(shape, sub, bodies.transform(i)));
+}
+
+// The world box `box` seen from the frame `transform`: the bounds of its corners there.
+Aabb boundsInFrame(const Aabb& box, const Transform& transform) {
+    const Mat3 toLocal = glm::transpose(glm::mat3_cast(transform.rotation));
+    const Vec3 half = box.halfExtents();
+    Vec3 localHalf(0.0f);
+    for (int j = 0; j < 3; ++j) localHalf += glm::abs(toLocal[j]) * half[j];
+    return Aabb::fromCenterHalfExtents(toLocal * (box.center() - transform.position), localHalf);
+}
+
+// Calls visit(sub) for each sub-shape of body i whose tight world bounds overlap `box`, in index
+// order. A compound's children are few (limits::kMaxCompoundChildren): a scan of their bounds in
+// the body frame against the box brought into that frame beats a tree, and skips computing the
+// world bounds of children that are far (a child that reaches into the box passes both tests).
+template <class Visit>
+void forEachSubShapeOverlapping(const BodyStorage& bodies, std::size_t i, const Aabb& box, Visit visit) {
+    const Shape& shape = bodies.shape[i];
+    if (!hasSeveralSubShapes(shape)) {
+        if (bodies.bounds[i].overlaps(box)) visit(0u);
+        return;
+    }
+    const Aabb local = boundsInFrame(box, bodies.transform(i));
+    const auto count = static_cast<std::uint32_t>(subShapeCount(shape));
+    for (std::uint32_t sub = 0; sub < count; ++sub)
+        if (subShapeLocalBounds(shape, sub).overlaps(local) && subShapeWorldBounds(bodies, i, sub).overlaps(box))
+            visit(sub);
+}
+
+std::uint64_t subShapePairKey(std::uint32_t subShapeA, std::uint32_t subShapeB) {
+    return (std::uint64_t(subShapeA) << 32) | subShapeB;
+}
+
+// The narrow phase for one contact; false when it is to go: its bodies' fat boxes no longer
+// overlap, or, made by the mid-phase, its sub-shapes' grown bounds no longer do.
+bool refreshManifold(Contact& contact, const BodyStorage& bodies, const BroadPhase& broadPhase, float speculativeDistance,
+                     float timeStep) {
+    const std::size_t a = bodies.denseIndexOfSlot(contact.slotA);
+    const std::size_t b = bodies.denseIndexOfSlot(contact.slotB);
+    // A sleeping pair keeps its manifold, ready for when it wakes.
+    if (!isAwakeDynamic(bodies, a) && !isAwakeDynamic(bodies, b)) return true;
+    if (!broadPhase.testOverlap(bodies.proxy[a], bodies.proxy[b])) return false;
+
+    const float margin = speculativeMargin(bodies, a, b, speculativeDistance, timeStep);
     // Fat boxes overlap long before shapes touch: when even the tight boxes, grown by the
     // margin, are apart, the pair has no points and the shape test is skipped.
-    Aabb reach = bodies.bounds[a];
-    reach.min -= Vec3(margin);
-    reach.max += Vec3(margin);
-    if (!reach.overlaps(bodies.bounds[b])) {
+    const Aabb reach = grown(subShapeWorldBounds(bodies, a, contact.subShapeA), margin);
+    if (!reach.overlaps(subShapeWorldBounds(bodies, b, contact.subShapeB))) {
+        if (contact.ofSubShapeBodyPair) return false;  // the mid-phase makes it again when they near
         contact.manifold.pointCount = 0;
         contact.impulses = {};
         contact.frictionImpulse = {};
         return true;
     }
 
+    const Shape& shapeA = bodies.shape[a];
+    const Shape& shapeB = bodies.shape[b];
     ContactManifold manifold;
-    collideShapes(bodies.shape[a], bodies.transform(a), bodies.shape[b], bodies.transform(b), margin, manifold);
+    collideShapes(subShape(shapeA, contact.subShapeA), subShapeTransform(shapeA, contact.subShapeA, bodies.transform(a)),
+                  subShape(shapeB, contact.subShapeB), subShapeTransform(shapeB, contact.subShapeB, bodies.transform(b)),
+                  margin, manifold);
 
     contact.impulses = matchImpulses(contact.manifold, contact.impulses, manifold);
     contact.manifold = manifold;
@@ -115,6 +175,7 @@ std::size_t ContactManager::addPairs(const std::vector<BodyPair>& pairs, const B
     for (const BodyPair& pair : pairs) {
         const std::uint64_t key = PairTable::key(pair.a, pair.b);
         if (pairToContact_.find(key) != PairTable::kNotFound) continue;
+        if (pairToSubShapeBodyPair_.find(key) != PairTable::kNotFound) continue;
         const std::size_t a = bodies.denseIndexOfSlot(pair.a);
         const std::size_t b = bodies.denseIndexOfSlot(pair.b);
         const bool dynamicA = bodies.motion[a] == MotionType::Dynamic;
@@ -126,20 +187,64 @@ std::size_t ContactManager::addPairs(const std::vector<BodyPair>& pairs, const B
             ++refused;
             continue;
         }
+        const bool dynamicPair = dynamicA && dynamicB;
+        if (dynamicPair) {
+            ++contactsOfSlot_[pair.a];
+            ++contactsOfSlot_[pair.b];
+        }
 
+        if (hasSeveralSubShapes(bodies.shape[a]) || hasSeveralSubShapes(bodies.shape[b])) {
+            pairToSubShapeBodyPair_.insert(key, static_cast<std::uint32_t>(subShapeBodyPairs_.size()));
+            subShapeBodyPairs_.push_back({pair.a, pair.b, dynamicPair, {}});
+            continue;
+        }
         Contact contact;
         contact.slotA = pair.a;
         contact.slotB = pair.b;
         combineMaterials(contact, bodies, a, b);
         pairToContact_.insert(key, static_cast<std::uint32_t>(contacts_.size()));
-        contact.dynamicPair = dynamicA && dynamicB;
+        contact.dynamicPair = dynamicPair;
         contacts_.push_back(contact);
-        if (contact.dynamicPair) {
-            ++contactsOfSlot_[pair.a];
-            ++contactsOfSlot_[pair.b];
-        }
     }
     return refused;
+}
+
+void ContactManager::findSubShapePairs(const BodyStorage& bodies, const BroadPhase& broadPhase,
+                                       float speculativeDistance, float timeStep) {
+    for (std::size_t p = 0; p < subShapeBodyPairs_.size();) {
+        SubShapeBodyPair& pair = subShapeBodyPairs_[p];
+        const std::size_t a = bodies.denseIndexOfSlot(pair.slotA);
+        const std::size_t b = bodies.denseIndexOfSlot(pair.slotB);
+        // The same tests, in the same order, as refreshManifold: a sleeping pair keeps its
+        // contacts, and a pair whose fat boxes parted goes (its contacts go in the narrow phase).
+        if (!isAwakeDynamic(bodies, a) && !isAwakeDynamic(bodies, b)) {
+            ++p;
+            continue;
+        }
+        if (!broadPhase.testOverlap(bodies.proxy[a], bodies.proxy[b])) {
+            removeSubShapeBodyPairAt(p);
+            continue;
+        }
+        const float margin = speculativeMargin(bodies, a, b, speculativeDistance, timeStep);
+        forEachSubShapeOverlapping(bodies, a, grown(bodies.bounds[b], margin), [&](std::uint32_t subA) {
+            forEachSubShapeOverlapping(bodies, b, grown(subShapeWorldBounds(bodies, a, subA), margin),
+                                       [&](std::uint32_t subB) {
+                const std::uint64_t key = subShapePairKey(subA, subB);
+                const auto at = std::lower_bound(pair.subShapePairs.begin(), pair.subShapePairs.end(), key);
+                if (at != pair.subShapePairs.end() && *at == key) return;
+                pair.subShapePairs.insert(at, key);
+                Contact contact;
+                contact.slotA = pair.slotA;
+                contact.slotB = pair.slotB;
+                contact.subShapeA = subA;
+                contact.subShapeB = subB;
+                contact.ofSubShapeBodyPair = true;
+                combineMaterials(contact, bodies, a, b);
+                contacts_.push_back(contact);
+            });
+        });
+        ++p;
+    }
 }
 
 void ContactManager::updateManifolds(const BodyStorage& bodies, const BroadPhase& broadPhase,
@@ -148,6 +253,7 @@ void ContactManager::updateManifolds(const BodyStorage& bodies, const BroadPhase
     // refreshed in parallel and the separated ones removed after, in the order a single pass
     // would remove them (removal moves the last contact into the gap: the order is part of the
     // state).
+    findSubShapePairs(bodies, broadPhase, speculativeDistance, timeStep);
     separated_.resize(contacts_.size());
     pool.parallelFor(contacts_.size(), kNarrowPhaseGrain, [&](std::size_t, std::size_t begin, std::size_t end) {
         for (std::size_t c = begin; c < end; ++c)
@@ -165,17 +271,44 @@ void ContactManager::updateManifolds(const BodyStorage& bodies, const BroadPhase
 }
 
 void ContactManager::removeAt(std::size_t index) {
-    if (contacts_[index].dynamicPair) {
-        --contactsOfSlot_[contacts_[index].slotA];
-        --contactsOfSlot_[contacts_[index].slotB];
+    const Contact& gone = contacts_[index];
+    const std::uint64_t bodyKey = PairTable::key(gone.slotA, gone.slotB);
+    if (gone.ofSubShapeBodyPair) {
+        // Its body pair may have gone first (fat boxes parted): then there is nothing to update.
+        if (const std::uint32_t p = pairToSubShapeBodyPair_.find(bodyKey); p != PairTable::kNotFound) {
+            std::vector<std::uint64_t>& list = subShapeBodyPairs_[p].subShapePairs;
+            const auto at = std::lower_bound(list.begin(), list.end(), subShapePairKey(gone.subShapeA, gone.subShapeB));
+            if (at != list.end() && *at == subShapePairKey(gone.subShapeA, gone.subShapeB)) list.erase(at);
+        }
+    } else {
+        if (gone.dynamicPair) {
+            --contactsOfSlot_[gone.slotA];
+            --contactsOfSlot_[gone.slotB];
+        }
+        pairToContact_.erase(bodyKey);
     }
-    pairToContact_.erase(PairTable::key(contacts_[index].slotA, contacts_[index].slotB));
     if (index + 1 != contacts_.size()) {
         contacts_[index] = contacts_.back();
-        pairToContact_.assign(PairTable::key(contacts_[index].slotA, contacts_[index].slotB),
-                              static_cast<std::uint32_t>(index));
+        if (!contacts_[index].ofSubShapeBodyPair)
+            pairToContact_.assign(PairTable::key(contacts_[index].slotA, contacts_[index].slotB),
+                                  static_cast<std::uint32_t>(index));
     }
     contacts_.pop_back();
+}
+
+void ContactManager::removeSubShapeBodyPairAt(std::size_t index) {
+    const SubShapeBodyPair& gone = subShapeBodyPairs_[index];
+    if (gone.dynamicPair) {
+        --contactsOfSlot_[gone.slotA];
+        --contactsOfSlot_[gone.slotB];
+    }
+    pairToSubShapeBodyPair_.erase(PairTable::key(gone.slotA, gone.slotB));
+    if (index + 1 != subShapeBodyPairs_.size()) {
+        subShapeBodyPairs_[index] = std::move(subShapeBodyPairs_.back());
+        pairToSubShapeBodyPair_.assign(PairTable::key(subShapeBodyPairs_[index].slotA, subShapeBodyPairs_[index].slotB),
+                                       static_cast<std::uint32_t>(index));
+    }
+    subShapeBodyPairs_.pop_back();
 }
 
 void ContactManager::removeContactsOf(std::uint32_t slot) {
@@ -184,6 +317,13 @@ void ContactManager::removeContactsOf(std::uint32_t slot) {
             removeAt(c);
         } else {
             ++c;
+        }
+    }
+    for (std::size_t p = 0; p < subShapeBodyPairs_.size();) {
+        if (subShapeBodyPairs_[p].slotA == slot || subShapeBodyPairs_[p].slotB == slot) {
+            removeSubShapeBodyPairAt(p);
+        } else {
+            ++p;
         }
     }
 }
@@ -196,13 +336,28 @@ void ContactManager::refreshMaterials(std::uint32_t slot, const BodyStorage& bod
 }
 
 void ContactManager::removePair(std::uint32_t slotA, std::uint32_t slotB) {
-    const std::uint32_t index = pairToContact_.find(PairTable::key(slotA, slotB));
-    if (index != PairTable::kNotFound) removeAt(index);
+    const std::uint64_t key = PairTable::key(slotA, slotB);
+    if (const std::uint32_t index = pairToContact_.find(key); index != PairTable::kNotFound) {
+        removeAt(index);
+        return;
+    }
+    const std::uint32_t pair = pairToSubShapeBodyPair_.find(key);
+    if (pair == PairTable::kNotFound) return;
+    for (std::size_t c = 0; c < contacts_.size();) {
+        if (PairTable::key(contacts_[c].slotA, contacts_[c].slotB) == key) {
+            removeAt(c);
+        } else {
+            ++c;
+        }
+    }
+    removeSubShapeBodyPairAt(pair);
 }
 
 void ContactManager::clear() {
     contacts_.clear();
     pairToContact_.clear();
+    subShapeBodyPairs_.clear();
+    pairToSubShapeBodyPair_.clear();
     contactsOfSlot_.clear();
 }
 

@@ -1,8 +1,14 @@
 #pragma once
-// Persistent contacts: one per pair of bodies whose fat bounds overlap. Created from the broad
-// phase's new pairs, refreshed by the narrow phase every step while either body is awake, and
-// destroyed when the fat bounds separate. Each manifold point keeps its accumulated impulses
-// across steps, matched by feature id, so the solver starts from last step's answer.
+// Persistent contacts: one per pair of sub-shapes (shape.h) of two bodies whose fat bounds overlap.
+// Each manifold point keeps its accumulated impulses across steps, matched by feature id within
+// its sub-shape pair, so the solver starts from last step's answer.
+//
+// Two bodies with one sub-shape each (every convex shape) have one contact, created from the
+// broad phase's new pair and destroyed when their fat bounds separate. A body pair where either
+// side has several sub-shapes (a compound) gets a SubShapeBodyPair instead, and each step, while
+// either body is awake, a mid-phase finds its sub-shape pairs whose tight bounds, grown by the
+// speculative margin, overlap: each gets a contact, dropped again once its bounds part. See
+// docs/architecture.md ("Contacts per pair of sub-shapes") for how a triangle mesh plugs in.
 
 #include "simcore/collision/broad_phase.h"
 #include "simcore/collision/contact_manifold.h"
@@ -30,10 +36,13 @@ struct FrictionImpulse {
 
 struct Contact {
     std::uint32_t slotA = 0, slotB = 0;  // body slots (BodyId::index): stable across removals
+    std::uint32_t subShapeA = 0, subShapeB = 0;  // sub-shape of each body (0 for a convex shape)
+    bool ofSubShapeBodyPair = false;     // made by the mid-phase for a body pair with several sub-shapes
     float friction = 0.0f;               // combined: sqrt(frictionA * frictionB)
     float restitution = 0.0f;            // combined: max(restitutionA, restitutionB)
     float rollingLever = 0.0f;           // m, combined: max(CA, CB) max(rA, rB)
     bool dynamicPair = false;            // both bodies dynamic at creation: counts toward their contact cap
+                                         // (false in a SubShapeBodyPair, which counts once for all)
     ContactManifold manifold;
     std::array<ContactImpulse, kMaxManifoldPoints> impulses{};
     FrictionImpulse frictionImpulse;
@@ -51,15 +60,17 @@ float combineRollingResistance(float coefficientA, float radiusA, float coeffici
 
 class ContactManager {
 public:
-    // Creates contacts for new broad-phase pairs (userData = body slot) that involve a dynamic body,
+    // Creates contacts (or a SubShapeBodyPair) for new broad-phase pairs (userData = body slot) that involve a dynamic body,
     // except a pair of dynamic bodies where one already has maxContactsPerBody contacts with other
     // dynamic bodies (contacts with static and kinematic bodies are always made, so a crowd never
     // falls through its floor). Returns how many pairs were refused; the broad phase offers them
     // again when a body's fat box moves.
     std::size_t addPairs(const std::vector<BodyPair>& pairs, const BodyStorage& bodies, int maxContactsPerBody);
 
-    // Narrow phase: refreshes the manifold of every contact with an awake dynamic body, and
-    // destroys contacts whose bodies' fat bounds no longer overlap. Points are kept while their
+    // Mid-phase, then narrow phase: makes the contacts of the sub-shape pairs that came near (in a
+    // fixed order, on one thread), refreshes the manifold of every contact with an awake dynamic
+    // body, and destroys contacts whose bodies' fat bounds (or, with several sub-shapes, whose
+    // sub-shapes' grown bounds) no longer overlap. Points are kept while their
     // separation is within speculativeDistance plus how far the bodies can approach in timeStep.
     // Contacts are refreshed on the pool's threads; the result does not depend on their number.
     void updateManifolds(const BodyStorage& bodies, const BroadPhase& broadPhase, float speculativeDistance,
@@ -69,7 +80,7 @@ public:
     // Recombines friction, restitution and rolling resistance of the contacts of one body slot after
     // the body's material changed; manifolds and accumulated impulses stay (warm starts intact).
     void refreshMaterials(std::uint32_t slot, const BodyStorage& bodies);
-    // Drops the contact of one pair of body slots, if there is one (a joint between them that
+    // Drops the contacts of one pair of body slots, if there are any (a joint between them that
     // turns their collision off).
     void removePair(std::uint32_t slotA, std::uint32_t slotB);
     void clear();
@@ -77,11 +88,26 @@ public:
     std::vector<Contact>& contacts() { return contacts_; }
     const std::vector<Contact>& contacts() const { return contacts_; }
 
+    std::size_t subShapeBodyPairCount() const { return subShapeBodyPairs_.size(); }
+
 private:
+    // A pair of bodies at least one of which has several sub-shapes: its contacts are made by the
+    // mid-phase, one per sub-shape pair that came near.
+    struct SubShapeBodyPair {
+        std::uint32_t slotA = 0, slotB = 0;
+        bool dynamicPair = false;  // counts once toward both bodies' contact cap
+        std::vector<std::uint64_t> subShapePairs;  // sorted (subShapeA << 32 | subShapeB) of its contacts
+    };
+
+    void findSubShapePairs(const BodyStorage& bodies, const BroadPhase& broadPhase, float speculativeDistance,
+                           float timeStep);
     void removeAt(std::size_t index);
+    void removeSubShapeBodyPairAt(std::size_t index);
 
     std::vector<Contact> contacts_;
-    PairTable pairToContact_;
+    PairTable pairToContact_;  // body pairs with one sub-shape each -> their contact
+    std::vector<SubShapeBodyPair> subShapeBodyPairs_;
+    PairTable pairToSubShapeBodyPair_;
     std::vector<std::uint32_t> contactsOfSlot_;  // by body slot: contacts with other dynamic bodies
     std::vector<std::uint8_t> separated_;        // scratch, by contact: to remove after the narrow phase
 };

@@ -395,8 +395,8 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const BodyStor
         // With friction off (or zero for this pair) the friction rows have zero mass: no effect.
         const float friction = params.friction ? contact.friction : 0.0f;
         const float restitution = params.restitution ? contact.restitution : 0.0f;
-        batch.radiusA.setLane(lane, roundingRadius(bodies.shape[a]));
-        batch.radiusB.setLane(lane, roundingRadius(bodies.shape[b]));
+        batch.radiusA.setLane(lane, roundingRadius(subShape(bodies.shape[a], contact.subShapeA)));
+        batch.radiusB.setLane(lane, roundingRadius(subShape(bodies.shape[b], contact.subShapeB)));
         batch.friction.setLane(lane, friction);
         batch.restitution.setLane(lane, restitution);
         batch.anyFriction = batch.anyFriction || friction > 0.0f;

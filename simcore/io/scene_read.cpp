@@ -11,6 +11,10 @@
 //  - orientation [w, x, y, z]: finite and not (near) zero length; a quaternion more than 1e-3
 //    from unit length is normalised with a warning (smaller deviations silently).
 //  - convex hulls: ConvexHull::build must succeed.
+//  - compounds: 1 to limits::kMaxCompoundChildren children, each a convex shape read (and
+//    reported) like a body's, at its own path ("/bodies/3/shape/children/1/shape/radius"); a
+//    compound child is refused (no nesting). A child's position defaults to 0, its orientation to
+//    identity, read like a body's.
 //  - what a dynamic body's values come to together (both formats): the mass a density gives
 //    (density x volume) within the mass range; the smallest principal moment of inertia at least
 //    1e-30 kg m^2 (its inverse must stay inside float range).
@@ -32,6 +36,7 @@
 
 #include "simcore/io/json_reader.h"
 #include "simcore/io/scene_v1.h"
+#include "simcore/shapes/compound_shape.h"
 #include "simcore/world/quality_preset.h"
 
 #include <algorithm>
@@ -134,7 +139,50 @@ void io_detail::readSettings(Reader& r, const Json& s, const std::string& path, 
 
 namespace {
 
-std::optional<Shape> readShape(Reader& r, const Json& j, const std::string& path) {
+std::optional<Quat> readOrientation(Reader& r, const Json& v, const std::string& path);
+
+// Whether a shape being read may be a compound: a body's may, a compound's child may not.
+enum class Nesting { BodyShape, CompoundChild };
+
+std::optional<Shape> readShape(Reader& r, const Json& j, const std::string& path, Nesting nesting);
+
+// "children": each {"shape", "position", "orientation"}; the child shapes convex.
+std::optional<Shape> readCompound(Reader& r, const Json& j, const std::string& path) {
+    r.checkKeys(j, path, propertyKeys(PropertyOwner::Compound), "for a compound shape");
+    const Json* children = r.require(j, path, "children");
+    const std::string p = childPath(path, "children");
+    if (!children || !r.expectArray(*children, p)) return std::nullopt;
+    if (children->empty() || children->size() > limits::kMaxCompoundChildren) {
+        r.error(p, "a compound has 1 to " + std::to_string(limits::kMaxCompoundChildren) + " children, got " +
+                       std::to_string(children->size()));
+        return std::nullopt;
+    }
+    std::vector<CompoundChild> parts;
+    bool ok = true;
+    for (std::size_t i = 0; i < children->size() && !r.full(); ++i) {
+        const Json& c = (*children)[i];
+        const std::string cp = childPath(p, i);
+        if (!r.expectObject(c, cp)) {
+            ok = false;
+            continue;
+        }
+        r.checkKeys(c, cp, propertyKeys(PropertyOwner::CompoundChild), "for a compound's child");
+        const int errorsBefore = r.errorCount();
+        CompoundChild child;
+        if (const Json* shape = r.require(c, cp, "shape"))
+            if (auto parsed = readShape(r, *shape, childPath(cp, "shape"), Nesting::CompoundChild))
+                child.shape = std::move(*parsed);
+        r.optionalVec3(c, cp, "position", propertyRange(PropertyOwner::CompoundChild, "position"), child.pose.position);
+        if (const Json* orientation = Reader::find(c, "orientation"))
+            if (const auto q = readOrientation(r, *orientation, childPath(cp, "orientation"))) child.pose.rotation = *q;
+        if (r.errorCount() > errorsBefore) ok = false;
+        else parts.push_back(std::move(child));
+    }
+    if (!ok) return std::nullopt;
+    return Shape::compoundOf(std::make_shared<const CompoundShape>(std::move(parts)));
+}
+
+std::optional<Shape> readShape(Reader& r, const Json& j, const std::string& path, Nesting nesting) {
     if (!r.expectObject(j, path)) return std::nullopt;
     const Json* typeValue = r.require(j, path, "type");
     if (!typeValue) return std::nullopt;
@@ -181,9 +229,12 @@ std::optional<Shape> readShape(Reader& r, const Json& j, const std::string& path
                 ok = false;
         }
         if (ok) return io_detail::hullShape(r, cloud, p);
+    } else if (*type == "compound") {
+        if (nesting == Nesting::BodyShape) return readCompound(r, j, path);
+        r.error(childPath(path, "type"), "a compound's child must be a convex shape: compounds do not nest");
     } else {
-        r.error(childPath(path, "type"),
-                "unknown shape type '" + *type + "' (expected box, sphere, capsule, cylinder or convexHull)");
+        r.error(childPath(path, "type"), "unknown shape type '" + *type +
+                                             "' (expected box, sphere, capsule, cylinder, convexHull or compound)");
     }
     return std::nullopt;
 }
@@ -228,7 +279,7 @@ std::optional<SceneBody> readBody(Reader& r, const Json& b, const std::string& p
     }
 
     if (const Json* shape = r.require(b, path, "shape"))
-        if (auto parsed = readShape(r, *shape, childPath(path, "shape"))) s.shape = std::move(*parsed);
+        if (auto parsed = readShape(r, *shape, childPath(path, "shape"), Nesting::BodyShape)) s.shape = std::move(*parsed);
 
     r.optionalVec3(b, path, "position", limits::kCoordinate, s.position);
     if (const Json* orientation = Reader::find(b, "orientation"))

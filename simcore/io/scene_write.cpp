@@ -3,6 +3,7 @@
 #include "simcore/io/scene_io.h"
 
 #include "simcore/io/scene_v1.h"
+#include "simcore/shapes/compound_shape.h"
 #include "simcore/world/quality_preset.h"
 
 #include <charconv>
@@ -72,6 +73,8 @@ const char* motionName(MotionType m) {
     return "dynamic";
 }
 
+OrderedJson quaternion(const Quat& q) { return OrderedJson::array({number(q.w), number(q.x), number(q.y), number(q.z)}); }
+
 OrderedJson shapeJson(const Shape& shape) {
     OrderedJson j = OrderedJson::object();
     j["type"] = std::string(shapeTypeName(shape.type));
@@ -90,6 +93,19 @@ OrderedJson shapeJson(const Shape& shape) {
             j["points"] = std::move(points);
             break;
         }
+        case ShapeType::Compound: {
+            OrderedJson children = OrderedJson::array();
+            if (shape.compound)
+                for (const CompoundChild& child : shape.compound->children()) {
+                    OrderedJson c = OrderedJson::object();
+                    c["shape"] = shapeJson(child.shape);
+                    c["position"] = vec3(child.pose.position);
+                    c["orientation"] = quaternion(child.pose.rotation);
+                    children.push_back(std::move(c));
+                }
+            j["children"] = std::move(children);
+            break;
+        }
     }
     return j;
 }
@@ -101,8 +117,7 @@ OrderedJson bodyJson(const SceneBody& sb) {
     j["motion"] = motionName(b.motion);
     j["shape"] = shapeJson(b.shape);
     j["position"] = vec3(b.position);
-    const Quat& q = b.orientation;
-    j["orientation"] = OrderedJson::array({number(q.w), number(q.x), number(q.y), number(q.z)});
+    j["orientation"] = quaternion(b.orientation);
     j["linearVelocity"] = vec3(b.linearVelocity);
     j["angularVelocity"] = vec3(b.angularVelocity);
     if (b.mass) j["mass"] = number(*b.mass);

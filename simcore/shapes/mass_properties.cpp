@@ -2,9 +2,12 @@
 // into signed tetrahedra, accumulated in double so that large or off-centre hulls keep their
 // precision, and shifted to the centre of mass at the end.
 
+#include "simcore/shapes/compound_shape.h"
 #include "simcore/shapes/shape.h"
 
 #include <glm/gtc/constants.hpp>
+
+#include <vector>
 
 namespace simcore {
 namespace {
@@ -102,6 +105,37 @@ MassProperties hullProperties(const ConvexHull& hull, double density) {
     return props;
 }
 
+// The children's properties summed about the common centre of mass: each child's inertia turned
+// into the body frame (R I R^T), then carried from its own centre by the parallel-axis theorem,
+// m (|d|^2 E - d d^T). The body's origin stays where the user put it; only the centre moves.
+MassProperties compoundProperties(const CompoundShape& compound, double density) {
+    std::vector<MassProperties> parts;
+    parts.reserve(compound.size());
+    double mass = 0.0;
+    DVec3 firstMoment(0.0);
+    for (const CompoundChild& child : compound.children()) {
+        parts.push_back(massProperties(child.shape, float(density)));
+        mass += parts.back().mass;
+        firstMoment += double(parts.back().mass) * DVec3(child.pose.apply(parts.back().centerOfMass));
+    }
+    if (!(mass > 0.0)) return {};
+    const DVec3 center = firstMoment / mass;
+
+    DMat3 inertia(0.0);
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+        const Transform& pose = compound.children()[i].pose;
+        const DMat3 rotation = DMat3(glm::mat3_cast(pose.rotation));
+        const DVec3 d = DVec3(pose.apply(parts[i].centerOfMass)) - center;
+        inertia += rotation * DMat3(parts[i].inertia) * glm::transpose(rotation) +
+                   double(parts[i].mass) * (glm::dot(d, d) * DMat3(1.0) - glm::outerProduct(d, d));
+    }
+    MassProperties props;
+    props.mass = float(mass);
+    props.centerOfMass = Vec3(center);
+    props.inertia = Mat3(inertia);
+    return props;
+}
+
 }  // namespace
 
 MassProperties massProperties(const Shape& shape, float density) {
@@ -112,6 +146,7 @@ MassProperties massProperties(const Shape& shape, float density) {
     case ShapeType::Capsule: return capsuleProperties(shape.radius, shape.halfHeight, rho);
     case ShapeType::Cylinder: return cylinderProperties(shape.radius, shape.halfHeight, rho);
     case ShapeType::ConvexHull: return shape.hull ? hullProperties(*shape.hull, rho) : MassProperties{};
+    case ShapeType::Compound: return shape.compound ? compoundProperties(*shape.compound, rho) : MassProperties{};
     }
     return {};
 }

@@ -1,5 +1,7 @@
 #include "simcore/shapes/shape.h"
 
+#include "simcore/shapes/compound_shape.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -13,6 +15,7 @@ std::string_view shapeTypeName(ShapeType type) {
     case ShapeType::Capsule: return "capsule";
     case ShapeType::Cylinder: return "cylinder";
     case ShapeType::ConvexHull: return "convexHull";
+    case ShapeType::Compound: return "compound";
     }
     return "unknown";
 }
@@ -54,7 +57,35 @@ Shape Shape::convexHull(std::shared_ptr<const ConvexHull> hull) {
     return s;
 }
 
+Shape Shape::compoundOf(std::shared_ptr<const CompoundShape> compound) {
+    Shape s;
+    s.type = ShapeType::Compound;
+    s.compound = std::move(compound);
+    return s;
+}
+
+std::size_t subShapeCount(const Shape& shape) {
+    if (shape.type != ShapeType::Compound) return 1;
+    return shape.compound ? shape.compound->size() : 0;
+}
+
+const Shape& subShape(const Shape& shape, std::size_t index) {
+    return shape.type == ShapeType::Compound ? shape.compound->children()[index].shape : shape;
+}
+
+Transform subShapeTransform(const Shape& shape, std::size_t index, const Transform& bodyTransform) {
+    // A convex shape's transform is returned as it is, so its collisions round exactly as before.
+    if (shape.type != ShapeType::Compound) return bodyTransform;
+    return childTransform(shape.compound->children()[index], bodyTransform);
+}
+
+Aabb subShapeLocalBounds(const Shape& shape, std::size_t index) {
+    return shape.type == ShapeType::Compound ? shape.compound->childBounds(index) : localBounds(shape);
+}
+
 namespace {
+
+bool hasChildren(const Shape& shape) { return shape.compound && shape.compound->size() > 0; }
 
 // Unit vector along v; for a zero vector any unit vector is an equally valid support direction.
 Vec3 directionOrX(const Vec3& v) {
@@ -88,6 +119,19 @@ Vec3 support(const Shape& shape, const Vec3& direction) {
     }
     case ShapeType::ConvexHull:
         return hasHull(shape) ? shape.hull->support(direction) : Vec3(0.0f);
+    case ShapeType::Compound: {
+        if (!hasChildren(shape)) return Vec3(0.0f);
+        Vec3 best(0.0f);
+        float bestReach = -std::numeric_limits<float>::max();
+        for (const CompoundChild& child : shape.compound->children()) {
+            const Vec3 p = child.pose.apply(support(child.shape, child.pose.rotateInverse(direction)));
+            if (const float reach = glm::dot(p, direction); reach > bestReach) {
+                best = p;
+                bestReach = reach;
+            }
+        }
+        return best;
+    }
     }
     return Vec3(0.0f);
 }
@@ -110,6 +154,8 @@ Aabb localBounds(const Shape& shape) {
         for (const Vec3& v : shape.hull->vertices()) bounds.grow(v);
         return bounds;
     }
+    case ShapeType::Compound:
+        return shape.compound ? shape.compound->bounds() : Aabb{Vec3(0.0f), Vec3(0.0f)};
     }
     return {Vec3(0.0f), Vec3(0.0f)};
 }
@@ -150,6 +196,14 @@ Aabb worldBounds(const Shape& shape, const Transform& transform) {
         bounds.max += transform.position;
         return bounds;
     }
+    case ShapeType::Compound: {
+        // Each child's own tight box: far tighter than the rotated box of the compound's bounds.
+        if (!hasChildren(shape)) return {transform.position, transform.position};
+        Aabb bounds;
+        for (const CompoundChild& child : shape.compound->children())
+            bounds.grow(worldBounds(child.shape, childTransform(child, transform)));
+        return bounds;
+    }
     }
     return {transform.position, transform.position};
 }
@@ -167,6 +221,12 @@ float volume(const Shape& shape) {
     case ShapeType::ConvexHull:
         // Unit density makes the mass the volume; the decomposition is in double precision.
         return massProperties(shape, 1.0f).mass;
+    case ShapeType::Compound: {
+        float total = 0.0f;
+        if (shape.compound)
+            for (const CompoundChild& child : shape.compound->children()) total += volume(child.shape);
+        return total;
+    }
     }
     return 0.0f;
 }
@@ -177,7 +237,8 @@ float rollingRadius(const Shape& shape) {
     case ShapeType::Capsule:
     case ShapeType::Cylinder: return shape.radius;
     case ShapeType::Box:
-    case ShapeType::ConvexHull: return 0.0f;
+    case ShapeType::ConvexHull:
+    case ShapeType::Compound: return 0.0f;
     }
     return 0.0f;
 }
@@ -205,6 +266,14 @@ float minimumExtent(const Shape& shape) {
             thinnest = std::min(thinnest, face.offset - deepest);
         }
         return hull.faces().empty() ? 0.0f : thinnest;
+    }
+    case ShapeType::Compound: {
+        // The thinnest child: a fast compound can pass a wall with its thinnest part first.
+        if (!hasChildren(shape)) return 0.0f;
+        float thinnest = std::numeric_limits<float>::max();
+        for (const CompoundChild& child : shape.compound->children())
+            thinnest = std::min(thinnest, minimumExtent(child.shape));
+        return thinnest;
     }
     }
     return 0.0f;

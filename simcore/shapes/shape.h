@@ -1,7 +1,11 @@
 #pragma once
 // Collision shapes. A Shape is a small value: its type and dimensions, plus a shared, immutable
-// hull for convex hulls. All shapes are convex and described in their own local frame, whose
-// origin is the owning body's origin (not necessarily the centre of mass).
+// hull for convex hulls or child list for compounds. Every type but Compound is convex; a compound
+// is a list of convex children, each placed in the body frame. Shapes are described in their own
+// local frame, whose origin is the owning body's origin (not necessarily the centre of mass).
+//
+// Sub-shapes: what collision works on. A convex shape is its own single sub-shape (index 0); a
+// compound's sub-shapes are its children, in order. Contacts, ray hits and sweeps name them.
 
 #include "simcore/math/aabb.h"
 #include "simcore/math/math.h"
@@ -12,10 +16,16 @@
 
 namespace simcore {
 
-enum class ShapeType : std::uint8_t { Sphere, Box, Capsule, Cylinder, ConvexHull };
+enum class ShapeType : std::uint8_t { Sphere, Box, Capsule, Cylinder, ConvexHull, Compound };
+// The convex types, which come first: what collideShapes dispatches over, a compound's children may
+// be and the editor's Add menus offer. Compound, made of them, follows.
 constexpr int kShapeTypeCount = 5;
+constexpr bool isConvex(ShapeType type) { return static_cast<int>(type) < kShapeTypeCount; }
 
-std::string_view shapeTypeName(ShapeType type);  // "sphere", "box", "capsule", "cylinder", "convexHull"
+// "sphere", "box", "capsule", "cylinder", "convexHull", "compound"
+std::string_view shapeTypeName(ShapeType type);
+
+class CompoundShape;  // compound_shape.h
 
 struct Shape {
     ShapeType type = ShapeType::Sphere;
@@ -23,26 +33,41 @@ struct Shape {
     float radius = 0.5f;      // sphere, capsule, cylinder (m)
     float halfHeight = 0.5f;  // capsule: half the straight segment; cylinder: half the height (m), along local Y
     std::shared_ptr<const ConvexHull> hull;  // convexHull only
+    std::shared_ptr<const CompoundShape> compound;  // compound only
 
     static Shape sphere(float radius);
     static Shape box(const Vec3& halfExtents);
     static Shape capsule(float radius, float halfHeight);
     static Shape cylinder(float radius, float halfHeight);
     static Shape convexHull(std::shared_ptr<const ConvexHull> hull);
+    static Shape compoundOf(std::shared_ptr<const CompoundShape> compound);
 };
 
-// Farthest point of the shape along `direction` (local frame; direction need not be unit).
+// Sub-shapes (see the top): 1 for a convex shape, the child count for a compound.
+std::size_t subShapeCount(const Shape& shape);
+// Sub-shape `index` (< subShapeCount) and where it sits: the shape itself at `bodyTransform` for a
+// convex shape, the child at bodyTransform * child pose for a compound.
+const Shape& subShape(const Shape& shape, std::size_t index);
+Transform subShapeTransform(const Shape& shape, std::size_t index, const Transform& bodyTransform);
+// The sub-shape's bounds in the body frame.
+Aabb subShapeLocalBounds(const Shape& shape, std::size_t index);
+
+// Farthest point of the shape along `direction` (local frame; direction need not be unit). For a
+// compound: the farthest point of any child, i.e. of the children's convex hull.
 Vec3 support(const Shape& shape, const Vec3& direction);
 
 // Tight bounds in the local frame, and of the shape placed by `transform` in the world.
 Aabb localBounds(const Shape& shape);
 Aabb worldBounds(const Shape& shape, const Transform& transform);
 
-float volume(const Shape& shape);  // (m^3)
+float volume(const Shape& shape);  // (m^3); a compound's is the sum of its children's
+
 
 // Mass, centre of mass (local frame) and inertia tensor about the centre of mass, axes parallel to
 // the local frame, for a uniform solid of the given density (kg/m^3). Exact closed forms for the
-// primitives; hulls by signed tetrahedral decomposition.
+// primitives; hulls by signed tetrahedral decomposition; compounds as the sum of their children
+// carried to the common centre of mass (parallel-axis theorem). Children that overlap count their
+// shared volume twice, as in Jolt and Bullet: the user sees and sets each child's size.
 struct MassProperties {
     float mass = 0.0f;          // kg
     Vec3 centerOfMass{0.0f};    // m, local frame
@@ -54,13 +79,13 @@ MassProperties massProperties(const Shape& shape, float density);
 MassProperties massPropertiesForMass(const Shape& shape, float mass);
 
 // Smallest extent of the shape (m): the thinnest dimension, used to decide when a body moves fast
-// enough to need continuous collision.
+// enough to need continuous collision. A compound's is its thinnest child's.
 float minimumExtent(const Shape& shape);
 
 // The lever of rolling resistance (m): the radius a round body rolls on (sphere, capsule and
 // cylinder radius), 0 for boxes and hulls, which rest on flat faces and tip rather than roll. A
 // cylinder standing on a flat end keeps its radius, so its resistance also acts against turning
-// on that end.
+// on that end. A compound's is 0: its contacts roll on the child that touches (sub-shapes).
 float rollingRadius(const Shape& shape);
 
 }  // namespace simcore

@@ -1,5 +1,8 @@
 #include "simcore/world/validation.h"
 
+#include "simcore/settings_schema.h"
+#include "simcore/shapes/compound_shape.h"
+
 #include <cmath>
 #include <stdexcept>
 
@@ -11,26 +14,51 @@ void require(bool condition, const std::string& what) {
 
 bool isPositiveFinite(float v) { return isFinite(v) && v > 0.0f; }
 
-void validateShape(const Shape& shape) {
+namespace {
+
+// `path` names the shape in messages: "shape", or "shape.children[1].shape" inside a compound.
+void validateShapeAt(const Shape& shape, const std::string& path) {
     switch (shape.type) {
         case ShapeType::Sphere:
-            require(isPositiveFinite(shape.radius), "shape.radius must be a positive finite number");
+            require(isPositiveFinite(shape.radius), path + ".radius must be a positive finite number");
             break;
         case ShapeType::Box:
             require(isPositiveFinite(shape.halfExtents.x) && isPositiveFinite(shape.halfExtents.y) &&
                         isPositiveFinite(shape.halfExtents.z),
-                    "shape.halfExtents must be positive finite numbers");
+                    path + ".halfExtents must be positive finite numbers");
             break;
         case ShapeType::Capsule:
         case ShapeType::Cylinder:
-            require(isPositiveFinite(shape.radius), "shape.radius must be a positive finite number");
-            require(isPositiveFinite(shape.halfHeight), "shape.halfHeight must be a positive finite number");
+            require(isPositiveFinite(shape.radius), path + ".radius must be a positive finite number");
+            require(isPositiveFinite(shape.halfHeight), path + ".halfHeight must be a positive finite number");
             break;
         case ShapeType::ConvexHull:
-            require(shape.hull != nullptr, "shape.hull is missing");
+            require(shape.hull != nullptr, path + ".hull is missing");
             break;
+        case ShapeType::Compound: {
+            require(shape.compound != nullptr, path + ".children are missing");
+            const std::size_t count = shape.compound->size();
+            require(count >= 1 && count <= limits::kMaxCompoundChildren,
+                    path + ".children must number 1 to " + std::to_string(limits::kMaxCompoundChildren) + ", got " +
+                        std::to_string(count));
+            for (std::size_t i = 0; i < count; ++i) {
+                const CompoundChild& child = shape.compound->children()[i];
+                const std::string childPath = path + ".children[" + std::to_string(i) + "]";
+                require(isConvex(child.shape.type), childPath + ".shape must be convex (compounds do not nest)");
+                validateShapeAt(child.shape, childPath + ".shape");
+                require(isFinite(child.pose.position), childPath + ".position must be finite");
+                require(isFinite(child.pose.rotation) &&
+                            std::abs(glm::length(child.pose.rotation) - 1.0f) <= 1e-3f,
+                        childPath + ".orientation must be a unit quaternion");
+            }
+            break;
+        }
     }
 }
+
+}  // namespace
+
+void validateShape(const Shape& shape) { validateShapeAt(shape, "shape"); }
 
 void validateMass(float mass) { require(isPositiveFinite(mass), "mass must be a positive finite number"); }
 void validateDensity(float density) { require(isPositiveFinite(density), "density must be a positive finite number"); }

@@ -37,11 +37,13 @@ struct WorldRayHit {
     float fraction = 0.0f;  // along the ray: point = origin + fraction * direction
     Vec3 point{0.0f};       // world frame (m)
     Vec3 normal{0.0f};      // unit, outward from the body at the point
+    std::uint32_t subShape = 0;  // which of the body's sub-shapes (shape.h): a compound's child index
 };
 
 // A persistent contact as the engine's public API shows it (touching or speculative).
 struct ContactInfo {
     BodyId bodyA, bodyB;
+    std::uint32_t subShapeA = 0, subShapeB = 0;  // the sub-shapes touching (shape.h): compound children
     float friction = 0.0f;     // combined coefficient
     float restitution = 0.0f;  // combined coefficient
     Vec3 normal{0.0f};         // unit, world frame, from A towards B

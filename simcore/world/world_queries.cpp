@@ -73,6 +73,8 @@ ContactInfo World::contact(std::size_t index) const {
     ContactInfo info;
     info.bodyA = bodies_.idAt(bodies_.denseIndexOfSlot(c.slotA));
     info.bodyB = bodies_.idAt(bodies_.denseIndexOfSlot(c.slotB));
+    info.subShapeA = c.subShapeA;
+    info.subShapeB = c.subShapeB;
     info.friction = c.friction;
     info.restitution = c.restitution;
     info.normal = c.manifold.normal;
@@ -129,7 +131,7 @@ std::optional<WorldRayHit> World::castRay(const Vec3& origin, const Vec3& direct
     auto testBody = [&](std::size_t i, float currentMax) {
         const RayCastInput clipped{ray.origin, ray.direction, currentMax};
         if (const auto hit = rayCastShape(bodies_.shape[i], bodies_.transform(i), clipped)) {
-            closest = WorldRayHit{bodies_.idAt(i), hit->fraction, hit->point, hit->normal};
+            closest = WorldRayHit{bodies_.idAt(i), hit->fraction, hit->point, hit->normal, hit->subShape};
             return hit->fraction;
         }
         return currentMax;
