@@ -63,6 +63,18 @@ if(EXISTS "${WORK}/bad")
     message(FATAL_ERROR "a refused sweep created its --out directory")
 endif()
 
+# --- a --grid file, with a --knob on top: 2 x 2 points of 0.25 s ---
+file(WRITE "${WORK}/grid.json" [[{"knobs": {"substeps": [1, 2]}, "seconds": 0.25, "reference": {"substeps": 4}}]])
+expect_run(0 "for deepest penetration" "${scene}" --grid "${WORK}/grid.json" --knob solver.velocityIterations=1,2
+           --out "${WORK}/gridfile")
+file(READ "${WORK}/gridfile/sweep.json" grid_json)
+string(JSON grid_points LENGTH "${grid_json}" points)
+string(JSON grid_seconds GET "${grid_json}" seconds)
+string(JSON grid_last GET "${grid_json}" points 3 knobs)
+if(NOT grid_points EQUAL 4 OR NOT grid_seconds EQUAL 0.25 OR NOT grid_last MATCHES "substeps=2.*solver.velocityIterations=2")
+    message(FATAL_ERROR "--grid was not followed: ${grid_points} points, ${grid_seconds} s, last ${grid_last}")
+endif()
+
 # --- in process, two threads ---
 expect_run(0 "for deepest penetration <= 0.001 m: timeStep=1/[0-9]+ s, substeps=[0-9] — .* ms/step"
            "${scene}" ${grid} --jobs 2 --out "${WORK}/threads")
@@ -132,6 +144,7 @@ if(NOT kept_before STREQUAL kept_after)
 endif()
 # Another sweep (a different duration) in the same directory is refused, not mixed in.
 expect_run(2 "holds the results of another sweep" "${scene}" --knob substeps=1 --seconds 0.25 --out "${WORK}/threads")
+expect_run(2 "holds the results of another sweep" "${scene}" --point substeps=1 --seconds 0.25 --out "${WORK}/xargs")
 file(GLOB leftovers "${WORK}/threads/.*" "${WORK}/threads/points/.*")
 if(leftovers)
     message(FATAL_ERROR "temporary files left behind: ${leftovers}")

@@ -348,8 +348,62 @@ std::string recommendation(const SweepReport& report, Measure measure, double li
            " — " + cost(*closest);
 }
 
-std::optional<std::string> writeReport(const fs::path& dir, const SweepReport& report) {
+std::string sweepMarkdown(const SweepReport& report, const std::string& recommendationLine) {
+    const SweepPlan& plan = *report.plan;
+    const Reference& r = *report.reference;
+    auto knobs = [](const std::vector<std::string>& assignments) {
+        std::string text;
+        for (const std::string& a : assignments) text += (text.empty() ? "" : ", ") + knobText(a);
+        return text;
+    };
+    std::size_t failed = 0;
+    for (const PointResult& p : report.points) failed += p.failed ? 1 : 0;
+    std::ostringstream md;
+    md << "# What accuracy costs: `" << fs::path(plan.scenePath).filename().string() << "`\n\n";
+    md << "Written by `interplay-sweep` (docs/sweep.md). " << report.points.size() << " points (" << failed
+       << " failed), " << plan.spec.seconds << " s simulated each, trajectories compared at " << plan.spec.sampleRate
+       << " instants per second. Cost is wall ms of `World::step` per simulated second; timings: " << report.timingNote
+       << ".\n\n";
+    md << "**Grid:** ";
+    for (std::size_t k = 0; k < plan.spec.knobs.size(); ++k) {
+        std::string values;
+        const std::string& key = plan.spec.knobs[k].key;
+        for (const std::string& v : plan.spec.knobs[k].values)
+            values += (values.empty() ? "" : ", ") + knobText(key + "=" + v).substr(key.size() + 1);
+        md << (k ? "; " : "") << "`" << plan.spec.knobs[k].key << "` " << values;
+    }
+    md << ".\n\n**Reference:** " << knobs(r.assignments) << " (" << shortNumber(r.msPerStep)
+       << " ms/step). Its distance from a run with half its time step, below which errors are not resolved:\n\n";
+    md << "| measure | reference's distance |\n|---|--:|\n";
+    for (std::size_t m = 0; m < kMeasureCount; ++m)
+        md << "| " << measureTitle(static_cast<Measure>(m)) << " (" << measureUnit(static_cast<Measure>(m)) << ") | "
+           << shortNumber(r.convergence[m]) << " |\n";
+    md << "\n**Recommendation:** " << recommendationLine << "\n\n";
+    for (std::size_t m = 0; m < kMeasureCount; ++m) {
+        const Measure measure = static_cast<Measure>(m);
+        md << "## " << measureTitle(measure) << " (" << measureUnit(measure) << ")\n\n";
+        md << "![" << measureTitle(measure) << " against cost](sweep-" << measureKey(measure) << ".svg)\n\n";
+        md << "The front (★, cheapest first), and the scene's own settings and the presets where the grid holds them:\n\n";
+        md << "| knobs | ms/step | ms per simulated s | " << measureTitle(measure) << " | |\n|---|--:|--:|--:|---|\n";
+        std::vector<std::size_t> rowsToShow = report.fronts[m];
+        for (std::size_t i = 0; i < report.points.size(); ++i)
+            if (!report.labels[i].empty() && !onFront(report, m, i)) rowsToShow.push_back(i);
+        for (std::size_t i : rowsToShow) {
+            const PointResult& p = report.points[i];
+            std::string labels;
+            for (const std::string& l : report.labels[i]) labels += (labels.empty() ? "" : ", ") + ("**" + l + "**");
+            md << "| " << (onFront(report, m, i) ? "★ " : "") << knobs(p.point.assignments) << " | "
+               << shortNumber(p.msPerStep) << " | " << shortNumber(p.msPerSimulatedSecond) << " | "
+               << (p.failed ? std::string("failed") : shortNumber(p.measures[m])) << " | " << labels << " |\n";
+        }
+        md << "\n";
+    }
+    return md.str();
+}
+
+std::optional<std::string> writeReport(const fs::path& dir, const SweepReport& report, const std::string& recommendationLine) {
     if (auto error = writeFileAtomically(dir / "sweep.csv", sweepCsv(report))) return error;
+    if (auto error = writeFileAtomically(dir / "sweep.md", sweepMarkdown(report, recommendationLine))) return error;
     if (auto error = writeFileAtomically(dir / "sweep.json", sweepJson(report).dump(2) + "\n")) return error;
     for (std::size_t m = 0; m < kMeasureCount; ++m) {
         const Measure measure = static_cast<Measure>(m);

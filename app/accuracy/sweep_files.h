@@ -60,12 +60,16 @@ std::vector<std::vector<std::string>> pointLabels(const simcore::Scene& scene, c
 std::string sweepCsv(const SweepReport& report);
 nlohmann::ordered_json sweepJson(const SweepReport& report);
 std::string measureSvg(const SweepReport& report, Measure measure);
+// A Markdown summary: the grid, the reference and its convergence, the recommendation, and per
+// measure its front (with the scene's own settings and the presets) beside its plot.
+std::string sweepMarkdown(const SweepReport& report, const std::string& recommendationLine);
 
 // "for <= 0.001 m deepest penetration: substeps=4, ... — 0.8 ms/step (48 ms per simulated s)", or
 // what comes closest when no point is within the limit.
 std::string recommendation(const SweepReport& report, Measure measure, double limit);
 
-// Writes sweep.csv, sweep.json and sweep-<measure>.svg into `dir`. Returns an error message.
-std::optional<std::string> writeReport(const std::filesystem::path& dir, const SweepReport& report);
+// Writes sweep.csv, sweep.json, sweep.md and sweep-<measure>.svg into `dir`. Returns an error message.
+std::optional<std::string> writeReport(const std::filesystem::path& dir, const SweepReport& report,
+                                       const std::string& recommendationLine);
 
 }  // namespace accuracy

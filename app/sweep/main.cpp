@@ -64,8 +64,9 @@ std::string jobCommand(const accuracy::SweepPlan& plan, const fs::path& dir, con
     return command;
 }
 
-// The plan in DIR: written when absent; one of another sweep is refused (its results would mix).
-std::optional<std::string> preparePlan(const fs::path& dir, const accuracy::SweepPlan& plan) {
+// The plan in DIR: one of another sweep is refused (its results would mix); written unless this
+// is one job of an emitted sweep, whose plan is the emitter's.
+std::optional<std::string> preparePlan(const fs::path& dir, const accuracy::SweepPlan& plan, bool write) {
     std::error_code ec;
     fs::create_directories(dir / "points", ec);
     if (ec) return "--out " + dir.string() + ": cannot create it: " + ec.message();
@@ -76,6 +77,7 @@ std::optional<std::string> preparePlan(const fs::path& dir, const accuracy::Swee
             return "--out " + dir.string() + " holds the results of another sweep (another scene, --seconds, --sample-rate or "
                    "--reference): give another --out or delete it";
     }
+    if (!write) return std::nullopt;
     return accuracy::writeFileAtomically(accuracy::planPath(dir), accuracy::planJson(plan).dump(2) + "\n");
 }
 
@@ -132,12 +134,14 @@ int finishReport(const Options& options, const simcore::Scene& scene, const accu
     report.labels = accuracy::pointLabels(scene, report.points);
     report.fronts = accuracy::fronts(report.points);
     report.timingNote = timingNote(report.points);
-    if (auto error = accuracy::writeReport(dir, report)) return complain(*error, kBadArguments);
+    const std::string advice = accuracy::recommendation(report, options.target, options.targetLimit);
+    if (auto error = accuracy::writeReport(dir, report, advice)) return complain(*error, kBadArguments);
     std::cerr << "reference " << reference.msPerStep << " ms/step; its distance from a run with half its time step: "
               << measureSummary(reference.convergence) << "\n"
               << "timings: " << report.timingNote << "\n"
-              << "wrote " << (dir / "sweep.csv").string() << ", sweep.json and " << accuracy::kMeasureCount << " plots\n";
-    std::cout << accuracy::recommendation(report, options.target, options.targetLimit) << '\n';
+              << "wrote " << (dir / "sweep.csv").string() << ", sweep.json, sweep.md and " << accuracy::kMeasureCount
+              << " plots\n";
+    std::cout << advice << '\n';
     return kSuccess;
 }
 
@@ -179,7 +183,7 @@ int run(Options options) {
 
     accuracy::SweepPlan plan;
     plan.scenePath = options.scenePath;
-    plan.spec.knobs = options.knobs.empty() && options.gridPath.empty() ? accuracy::defaultKnobs() : options.knobs;
+    plan.spec.knobs = options.knobsGiven ? options.knobs : accuracy::defaultKnobs();
     if (!options.point.empty()) {
         // One point of the grid: the knobs are its assignments, one value each.
         plan.spec.knobs.clear();
@@ -195,13 +199,7 @@ int run(Options options) {
     const fs::path dir = !options.outDir.empty() ? fs::path(options.outDir)
                                                  : fs::path("sweep-" + fs::path(options.scenePath).stem().string());
     std::signal(SIGINT, onInterrupt);
-    if (options.point.empty()) {
-        if (auto error = preparePlan(dir, plan)) return complain(*error, kBadArguments);
-    } else {
-        std::error_code ec;
-        fs::create_directories(dir / "points", ec);
-        if (ec) return complain("--out " + dir.string() + ": cannot create it: " + ec.message(), kBadArguments);
-    }
+    if (auto error = preparePlan(dir, plan, options.point.empty())) return complain(*error, kBadArguments);
     int code = kSuccess;
     const std::optional<accuracy::Reference> reference = prepareReference(scene, plan, dir, code);
     if (!reference) return code;

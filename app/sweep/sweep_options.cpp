@@ -107,6 +107,7 @@ std::optional<std::string> readGridFile(const std::string& path, Options& option
                 fromFile.push_back(std::move(knob));
             }
             options.knobs.insert(options.knobs.begin(), fromFile.begin(), fromFile.end());
+            options.knobsGiven = true;
         } else if (key == "seconds" || key == "sampleRate") {
             if (!value.is_number()) return "--grid " + path + ": \"" + key + "\" must be a number";
             std::optional<double>& field = key == "seconds" ? options.seconds : options.sampleRate;
@@ -148,6 +149,7 @@ ParseResult parseArguments(const std::vector<std::string>& arguments) {
             if (!knob) return fail("--knob expects KEY=V1,V2,..., got '" + value + "'");
             if (knob->values.empty()) return fail("the grid is empty: --knob " + knob->key + " has no values");
             options.knobs.push_back(*knob);
+            options.knobsGiven = true;
         } else if (arg == "--grid") {
             options.gridPath = value;
         } else if (arg == "--seconds" || arg == "--sample-rate") {

@@ -22,7 +22,8 @@ enum ExitCode {
 
 struct Options {
     std::string scenePath;
-    std::vector<accuracy::Knob> knobs;        // --knob, in order
+    std::vector<accuracy::Knob> knobs;        // --knob, in order (after the --grid file's)
+    bool knobsGiven = false;                  // by --knob or the file's "knobs" (else the default grid)
     std::string gridPath;                     // --grid
     std::optional<double> seconds;            // --seconds
     std::optional<double> sampleRate;         // --sample-rate
