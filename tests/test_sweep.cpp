@@ -88,6 +88,7 @@ private slots:
     void referenceConvergenceIsItsDistanceFromTheFinerRun();
     void finerReferenceChangesErrorsByLessThanReported();
     void gridIsEveryCombinationWithStableIds();
+    void effectTogglesAreTheEffectsTheSceneUses();
     void badSpecNamesTheProblem_data();
     void badSpecNamesTheProblem();
     void threadsGiveTheSameNumbers();
@@ -191,6 +192,29 @@ void TestSweep::gridIsEveryCombinationWithStableIds() {
     }
     QCOMPARE(accuracy::expandGrid(accuracy::defaultKnobs()).size(), std::size_t(72));
     QVERIFY(accuracy::expandGrid({{"substeps", {}}}).empty());
+}
+
+void TestSweep::effectTogglesAreTheEffectsTheSceneUses() {
+    accuracy::SweepSpec spec;
+    spec.seconds = 0.5;
+    // Nothing to touch: no friction, restitution or sleeping can run; damping is off in the scene.
+    const std::vector<std::vector<std::string>> none = accuracy::effectToggles(parse(kProjectile), spec);
+    for (const auto& point : none)
+        for (const char* effect : {"friction", "restitution", "damping", "sleeping"})
+            QVERIFY2(point.front().find(effect) == std::string::npos, point.front().c_str());
+    // A tower stands on friction; gravity, contacts and joints define a scene and are never toggled.
+    const std::vector<std::vector<std::string>> tower = accuracy::effectToggles(sceneFile("tower20.json"), spec);
+    QVERIFY(std::find(tower.begin(), tower.end(), std::vector<std::string>{"effects.friction=false"}) != tower.end());
+    for (const auto& point : tower) QVERIFY(point.front().find("gravity") == std::string::npos);
+    // Extra points come after the product, once each, and not again when the product holds them.
+    spec.knobs = {{"substeps", {"1", "2"}}};
+    spec.extraPoints = {{"effects.friction=false"}, {"substeps=2"}, {"effects.friction=false"}};
+    const std::vector<accuracy::GridPoint> grid = accuracy::gridPoints(spec);
+    QCOMPARE(grid.size(), std::size_t(3));
+    QCOMPARE(grid[2].assignments, std::vector<std::string>{"effects.friction=false"});
+    QVERIFY(!accuracy::checkSpec(sceneFile("tower20.json"), spec));
+    spec.extraPoints = {{"effects.bogus=false"}};
+    QVERIFY(accuracy::checkSpec(sceneFile("tower20.json"), spec)->find("unknown setting 'effects.bogus'") != std::string::npos);
 }
 
 void TestSweep::badSpecNamesTheProblem_data() {

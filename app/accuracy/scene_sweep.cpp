@@ -179,6 +179,26 @@ std::vector<GridPoint> expandGrid(const std::vector<Knob>& knobs) {
     }
 }
 
+std::vector<GridPoint> gridPoints(const SweepSpec& spec) {
+    std::vector<GridPoint> grid = expandGrid(spec.knobs);
+    for (const std::vector<std::string>& assignments : spec.extraPoints) {
+        GridPoint p{assignments, pointId(assignments)};
+        if (std::none_of(grid.begin(), grid.end(), [&](const GridPoint& q) { return q.id == p.id; }))
+            grid.push_back(std::move(p));
+    }
+    return grid;
+}
+
+std::vector<std::vector<std::string>> effectToggles(const simcore::Scene& scene, const SweepSpec& spec) {
+    const RunRecord run = recordRun(scene, {}, spec);
+    std::vector<std::vector<std::string>> toggles;
+    for (simcore::Effect effect : {simcore::Effect::Damping, simcore::Effect::Gyroscopic, simcore::Effect::Friction,
+                                   simcore::Effect::Restitution, simcore::Effect::Ccd, simcore::Effect::Sleeping})
+        if (run.effectsRan[static_cast<std::size_t>(effect)])
+            toggles.push_back({"effects." + std::string(simcore::effectName(effect)) + "=false"});
+    return toggles;
+}
+
 std::optional<std::string> checkSpec(const simcore::Scene& scene, const SweepSpec& spec) {
     if (!(spec.seconds > 0.0) || !(spec.seconds <= 1e5))
         return "--seconds must be a number of seconds in (0, 100000], got " + simcore::formatNumber(spec.seconds);
@@ -200,6 +220,11 @@ std::optional<std::string> checkSpec(const simcore::Scene& scene, const SweepSpe
                        " s would take more than 1e8 steps";
         }
         points *= static_cast<double>(knob.values.size());
+    }
+    for (const std::vector<std::string>& extra : spec.extraPoints) {
+        simcore::Scene copy = scene;
+        for (const std::string& assignment : extra)
+            if (auto error = simcore::applySettingOverride(copy, assignment)) return "point '" + assignment + "': " + *error;
     }
     if (points > static_cast<double>(kMaxGridPoints))
         return "the grid has " + simcore::formatNumber(points) + " points, more than " + std::to_string(kMaxGridPoints);
@@ -254,6 +279,8 @@ RunRecord recordRun(const simcore::Scene& scene, const std::vector<std::string>&
             addSample(record, before, after, (static_cast<double>(nextSample) / spec.sampleRate - t0) / (t1 - t0));
         before = after;
     }
+    for (std::size_t e = 0; e < record.effectsRan.size(); ++e)
+        record.effectsRan[e] = world.effectUsage().ran(static_cast<simcore::Effect>(e));
     // A last instant the steps fell short of by rounding (under 1e-9 of the run) takes the final state.
     for (; nextSample <= samples; ++nextSample) addSample(record, before, before, 0.0);
     return record;

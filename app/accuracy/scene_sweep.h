@@ -28,6 +28,9 @@ struct SweepSpec {
     double seconds = 2.0;                  // simulated per run
     double sampleRate = 60.0;              // Hz: trajectories are compared at these instants
     std::vector<std::string> reference;    // "key=value" applied after defaultReference(): what the user changed
+    // Points beyond the Cartesian product, each its own assignments over the scene's settings
+    // (effectToggles() gives the default grid's).
+    std::vector<std::vector<std::string>> extraPoints;
 };
 
 // The grid when none is given: time step 1/30, 1/60, 1/120 s x 1, 2, 4, 8 substeps x 1, 2, 4
@@ -48,6 +51,8 @@ struct GridPoint {
 };
 std::string pointId(const std::vector<std::string>& assignments);
 std::vector<GridPoint> expandGrid(const std::vector<Knob>& knobs);
+// The Cartesian product of the knobs, then the extra points not already in it.
+std::vector<GridPoint> gridPoints(const SweepSpec& spec);
 
 // Checks the spec against the scene: every knob a known setting with at least one value, each
 // value accepted, no knob twice, a positive duration and sample rate, a valid reference. Returns
@@ -88,6 +93,7 @@ struct RunRecord {
     double wallMs = 0.0;
     std::uint64_t steps = 0;
     double timeStep = 0.0;
+    std::array<bool, simcore::kEffectCount> effectsRan{};  // which effects ran in any step
     bool finite = true;     // false: a body's state went non-finite; the run stopped there
     bool cancelled = false;
 };
@@ -96,6 +102,11 @@ struct RunRecord {
 // `cancel`, when set, is polled every step.
 RunRecord recordRun(const simcore::Scene& scene, const std::vector<std::string>& assignments, const SweepSpec& spec,
                     const std::atomic<bool>* cancel = nullptr);
+
+// One extra point per effect the scene uses that trades accuracy or cost rather than defining the
+// scene (damping, gyroscopic, friction, restitution, ccd, sleeping): "effects.NAME=false" at the
+// scene's own settings. Found by running the scene at its settings for `spec.seconds`.
+std::vector<std::vector<std::string>> effectToggles(const simcore::Scene& scene, const SweepSpec& spec);
 
 // `run` against `reference`; a failed run has every measure +inf.
 Measures compare(const RunRecord& run, const RunRecord& reference);

@@ -7,6 +7,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -255,10 +256,21 @@ std::vector<std::vector<std::string>> pointLabels(const simcore::Scene& scene, c
     return labels;
 }
 
+// The keys the points set, the knobs' first: a column each in the CSV.
+std::vector<std::string> assignedKeys(const SweepReport& report) {
+    std::vector<std::string> keys;
+    for (const Knob& k : report.plan->spec.knobs) keys.push_back(k.key);
+    for (const PointResult& p : report.points)
+        for (const std::string& a : p.point.assignments)
+            if (std::find(keys.begin(), keys.end(), a.substr(0, a.find('='))) == keys.end()) keys.push_back(a.substr(0, a.find('=')));
+    return keys;
+}
+
 std::string sweepCsv(const SweepReport& report) {
+    const std::vector<std::string> keys = assignedKeys(report);
     std::ostringstream csv;
     csv << "id";
-    for (const Knob& k : report.plan->spec.knobs) csv << ',' << csvField(k.key);
+    for (const std::string& key : keys) csv << ',' << csvField(key);
     csv << ",failed";
     for (std::size_t m = 0; m < kMeasureCount; ++m) csv << ',' << measureKey(static_cast<Measure>(m));
     csv << ",steps,msPerStep,msPerSimulatedSecond";
@@ -267,7 +279,12 @@ std::string sweepCsv(const SweepReport& report) {
     for (std::size_t i = 0; i < report.points.size(); ++i) {
         const PointResult& p = report.points[i];
         csv << p.point.id;
-        for (const std::string& a : p.point.assignments) csv << ',' << csvField(a.substr(a.find('=') + 1));
+        for (const std::string& key : keys) {  // empty: the point keeps the scene's value
+            std::string value;
+            for (const std::string& a : p.point.assignments)
+                if (a.compare(0, a.find('='), key) == 0) value = a.substr(a.find('=') + 1);
+            csv << ',' << csvField(value);
+        }
         csv << ',' << (p.failed ? 1 : 0);
         for (double v : p.measures) csv << ',' << number(v);  // empty: the run failed
         csv << ',' << p.steps << ',' << number(p.msPerStep) << ',' << number(p.msPerSimulatedSecond);
@@ -372,6 +389,14 @@ std::string sweepMarkdown(const SweepReport& report, const std::string& recommen
             values += (values.empty() ? "" : ", ") + knobText(key + "=" + v).substr(key.size() + 1);
         md << (k ? "; " : "") << "`" << plan.spec.knobs[k].key << "` " << values;
     }
+    std::string extras;
+    for (const PointResult& p : report.points) {
+        const bool inProduct = p.point.assignments.size() == plan.spec.knobs.size() &&
+                               std::equal(p.point.assignments.begin(), p.point.assignments.end(), plan.spec.knobs.begin(),
+                                          [](const std::string& a, const Knob& k) { return a.compare(0, a.find('='), k.key) == 0; });
+        if (!inProduct) extras += (extras.empty() ? "" : ", ") + ("`" + knobs(p.point.assignments) + "`");
+    }
+    if (!extras.empty()) md << "; and at the scene's own settings: " << extras;
     md << ".\n\n**Reference:** " << knobs(r.assignments) << " (" << shortNumber(r.msPerStep)
        << " ms/step). Its distance from a run with half its time step, below which errors are not resolved:\n\n";
     md << "| measure | reference's distance |\n|---|--:|\n";

@@ -193,7 +193,8 @@ int run(Options options) {
     plan.spec.sampleRate = options.sampleRate.value_or(plan.spec.sampleRate);
     plan.spec.reference = options.reference;
     if (auto error = accuracy::checkSpec(scene, plan.spec)) return complain(*error, kBadArguments);
-    plan.grid = accuracy::expandGrid(plan.spec.knobs);
+    if (!options.knobsGiven && options.point.empty()) plan.spec.extraPoints = accuracy::effectToggles(scene, plan.spec);
+    plan.grid = accuracy::gridPoints(plan.spec);
     plan.key = accuracy::sweepKey(scene, plan.spec);
 
     const fs::path dir = !options.outDir.empty() ? fs::path(options.outDir)
