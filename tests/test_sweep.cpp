@@ -354,6 +354,7 @@ void TestSweep::corruptPointFileIsRefused() {
 void TestSweep::recommendationPicksTheCheapestWithinTheLimit() {
     accuracy::SweepPlan plan;
     plan.scenePath = "scene.json";
+    plan.spec.knobs = {{"substeps", {"1", "4", "8"}}};
     accuracy::Reference r;
     accuracy::SweepReport report;
     report.plan = &plan;
@@ -371,6 +372,10 @@ void TestSweep::recommendationPicksTheCheapestWithinTheLimit() {
     QVERIFY2(line.rfind("for deepest penetration <= 0.001 m: substeps=4 — 0.05 ms/step", 0) == 0, line.c_str());
     const std::string none = accuracy::recommendation(report, Measure::Penetration, 0.0001);
     QVERIFY2(none.find("no point reaches") == 0 && none.find("substeps=8") != std::string::npos, none.c_str());
+    // A point beyond the product is the scene's settings with its one change.
+    report.points.push_back(point("effects.friction=false", 0.0005, 0.5));
+    const std::string extra = accuracy::recommendation(report, Measure::Penetration, 0.001);
+    QVERIFY2(extra.find(": the scene's settings with effects.friction=false — ") != std::string::npos, extra.c_str());
 }
 
 QTEST_GUILESS_MAIN(TestSweep)

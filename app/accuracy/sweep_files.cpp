@@ -86,6 +86,13 @@ std::string shortNumber(double v) {
     return buffer;
 }
 
+// Whether the point is one of the knobs' product (else an extra point over the scene's settings).
+bool inProduct(const SweepPlan& plan, const GridPoint& point) {
+    return point.assignments.size() == plan.spec.knobs.size() &&
+           std::equal(point.assignments.begin(), point.assignments.end(), plan.spec.knobs.begin(),
+                      [](const std::string& a, const Knob& k) { return a.compare(0, a.find('='), k.key) == 0; });
+}
+
 bool onFront(const SweepReport& report, std::size_t measure, std::size_t point) {
     const std::vector<std::size_t>& f = report.fronts[measure];
     return std::find(f.begin(), f.end(), point) != f.end();
@@ -345,9 +352,9 @@ std::string measureSvg(const SweepReport& report, Measure measure) {
 
 std::string recommendation(const SweepReport& report, Measure measure, double limit) {
     const std::size_t m = static_cast<std::size_t>(measure);
-    auto knobs = [](const PointResult& p) {
-        std::string text;
-        for (const std::string& a : p.point.assignments) text += (text.empty() ? "" : ", ") + knobText(a);
+    auto knobs = [&](const PointResult& p) {
+        std::string text = inProduct(*report.plan, p.point) ? "" : "the scene's settings with ";
+        for (std::size_t i = 0; i < p.point.assignments.size(); ++i) text += (i ? ", " : "") + knobText(p.point.assignments[i]);
         return text;
     };
     auto cost = [](const PointResult& p) {
@@ -391,10 +398,7 @@ std::string sweepMarkdown(const SweepReport& report, const std::string& recommen
     }
     std::string extras;
     for (const PointResult& p : report.points) {
-        const bool inProduct = p.point.assignments.size() == plan.spec.knobs.size() &&
-                               std::equal(p.point.assignments.begin(), p.point.assignments.end(), plan.spec.knobs.begin(),
-                                          [](const std::string& a, const Knob& k) { return a.compare(0, a.find('='), k.key) == 0; });
-        if (!inProduct) extras += (extras.empty() ? "" : ", ") + ("`" + knobs(p.point.assignments) + "`");
+        if (!inProduct(plan, p.point)) extras += (extras.empty() ? "" : ", ") + ("`" + knobs(p.point.assignments) + "`");
     }
     if (!extras.empty()) md << "; and at the scene's own settings: " << extras;
     md << ".\n\n**Reference:** " << knobs(r.assignments) << " (" << shortNumber(r.msPerStep)
