@@ -95,7 +95,8 @@ std::optional<accuracy::Reference> prepareReference(const simcore::Scene& scene,
     std::cerr << '\n';
     if (!reference) {
         code = interrupted ? kInterrupted : kReferenceFailed;
-        std::cerr << "interplay-sweep: " << error << '\n';
+        std::cerr << "interplay-sweep: "
+                  << (interrupted ? "interrupted during the reference run; nothing is kept yet" : error) << '\n';
         return std::nullopt;
     }
     if (auto writeError = accuracy::writeFileAtomically(accuracy::referencePath(dir),
