@@ -9,7 +9,7 @@
 // long), single-threaded, on whatever else the machine is doing: the report records the load.
 
 #include "reference_scenes.h"
-#include "svg_plot.h"
+#include "accuracy/svg_plot.h"
 #include "sweep.h"
 
 #include "simcore/world/quality_preset.h"

@@ -1,8 +1,9 @@
 #include "sweep.h"
 
+#include "accuracy/pareto.h"
+
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace accuracy {
 
@@ -153,25 +154,14 @@ Measurement measure(const ReferenceScene& scene, const WorldSettings& settings, 
 }
 
 std::vector<std::size_t> markParetoFront(std::vector<Point>& points) {
-    std::vector<std::size_t> order;
-    for (std::size_t i = 0; i < points.size(); ++i) {
-        points[i].onFront = false;
-        if (std::isfinite(points[i].error)) order.push_back(i);
+    std::vector<double> cost, error;
+    for (Point& p : points) {
+        p.onFront = false;
+        cost.push_back(p.msPerSimulatedSecond);
+        error.push_back(p.error);
     }
-    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-        if (points[a].msPerSimulatedSecond != points[b].msPerSimulatedSecond)
-            return points[a].msPerSimulatedSecond < points[b].msPerSimulatedSecond;
-        return points[a].error < points[b].error;
-    });
-    std::vector<std::size_t> front;
-    double bestError = std::numeric_limits<double>::infinity();
-    for (std::size_t i : order) {
-        if (points[i].error < bestError) {
-            bestError = points[i].error;
-            points[i].onFront = true;
-            front.push_back(i);
-        }
-    }
+    const std::vector<std::size_t> front = paretoFront(cost, error);
+    for (std::size_t i : front) points[i].onFront = true;
     return front;
 }
 
