@@ -1,12 +1,16 @@
 // Static triangle surfaces: TriangleMesh validation, adjacency and active edges, the BVH query and
-// ray cast (both against brute force over every triangle).
+// ray cast (both against brute force over every triangle), and the narrow phase of convex shapes
+// against triangles (collideTriangleConvex): full manifolds, internal edges, one-sidedness.
 
 #include "support/allocation_counter.h"
+#include "simcore/collision/collide_mesh.h"
+#include "simcore/shapes/convex_hull.h"
 #include "simcore/shapes/triangle_mesh.h"
 
 #include <QtTest>
 
 #include <cmath>
+#include <optional>
 #include <random>
 #include <set>
 #include <vector>
@@ -49,7 +53,57 @@ Aabb boundsOf(const Triangle& t) {
     return box;
 }
 
+const Vec3 kUp(0.0f, 1.0f, 0.0f);
+constexpr float kSpeculative = 0.02f;  // m, a typical speculative margin
+
+Transform at(const Vec3& position, const Quat& rotation = Quat(1, 0, 0, 0)) { return {position, rotation}; }
+Quat yaw(float degrees) { return glm::angleAxis(degrees * kPi / 180.0f, kUp); }
+
+// Manifolds of `shape` against every triangle of `mesh` (with each triangle's flags replaced by
+// `forcedFlags` when given, to show what the active-edge flags prevent).
+std::vector<ContactManifold> collideAll(const TriangleMesh& mesh, const Shape& shape, const Transform& t,
+                                        std::optional<TriangleFeatureFlags> forcedFlags = std::nullopt) {
+    std::vector<ContactManifold> manifolds;
+    for (std::uint32_t i = 0; i < mesh.triangleCount(); ++i) {
+        Triangle tri = mesh.triangle(i);
+        if (forcedFlags) tri.flags = *forcedFlags;
+        ContactManifold m;
+        if (collideTriangleConvex(tri, shape, t, kSpeculative, m)) manifolds.push_back(m);
+    }
+    return manifolds;
+}
+
+float tiltDegrees(const Vec3& normal) { return std::acos(std::min(1.0f, glm::dot(normal, kUp))) * 180.0f / kPi; }
+
+// Every manifold's invariants: unit normal, separation = dot(pointB - pointA, normal), within the
+// speculative distance, finite.
+void checkInvariants(const ContactManifold& m) {
+    QVERIFY(m.pointCount >= 1 && m.pointCount <= kMaxManifoldPoints);
+    QVERIFY(std::abs(glm::length(m.normal) - 1.0f) < 1e-5f);
+    for (int k = 0; k < m.pointCount; ++k) {
+        const ContactPoint& p = m.points[k];
+        QVERIFY(isFinite(p.pointA) && isFinite(p.pointB) && isFinite(p.separation));
+        QVERIFY(std::abs(glm::dot(p.pointB - p.pointA, m.normal) - p.separation) < 1e-5f);
+        QVERIFY(p.separation <= kSpeculative + 1e-6f);
+    }
+}
+
+float deepest(const ContactManifold& m) {
+    float d = std::numeric_limits<float>::max();
+    for (int k = 0; k < m.pointCount; ++k) d = std::min(d, m.points[k].separation);
+    return d;
+}
+
+std::shared_ptr<const ConvexHull> boxHull(const Vec3& h) {
+    std::vector<Vec3> points;
+    for (int k = 0; k < 8; ++k) points.emplace_back(k & 1 ? h.x : -h.x, k & 2 ? h.y : -h.y, k & 4 ? h.z : -h.z);
+    return ConvexHull::build(points).hull;
+}
+
 }  // namespace
+
+Q_DECLARE_METATYPE(Shape)
+Q_DECLARE_METATYPE(Transform)
 
 class TestTriangleMesh : public QObject {
     Q_OBJECT
@@ -65,6 +119,16 @@ private slots:
     void bvhQueryAllocatesNothing();
     void rayCastMatchesBruteForce();
     void rayCastIsTwoSidedAndRejectsBadRays();
+    void boxRestingOnSquareGetsFourPointsPerTriangle();
+    void restingShapesGetFullManifolds_data();
+    void restingShapesGetFullManifolds();
+    void boxSlidingAcrossSeamKeepsFaceNormal_data();
+    void boxSlidingAcrossSeamKeepsFaceNormal();
+    void sphereRollingOverSeamKeepsFaceNormal();
+    void activeBoundaryEdgeKeepsItsNormal();
+    void oneSidedWallIgnoresShapesBehind();
+    void beyondSpeculativeDistanceGivesNothing();
+    void collideAllocatesNothing();
 };
 
 void TestTriangleMesh::validationNamesWhatIsWrong_data() {
@@ -242,6 +306,194 @@ void TestTriangleMesh::rayCastIsTwoSidedAndRejectsBadRays() {
     QVERIFY(!mesh->rayCast({0, 1, 0}, {0, 0, 0}));
     QVERIFY(!mesh->rayCast({0, std::nanf(""), 0}, {0, -2, 0}));
     QVERIFY(!mesh->rayCast({0, 1, 0}, {0, -2, 0}, -1.0f));
+}
+
+void TestTriangleMesh::boxRestingOnSquareGetsFourPointsPerTriangle() {
+    const auto mesh = flatSquare();
+    const Shape box = Shape::box({0.2f, 0.2f, 0.2f});
+    // Wholly over triangle 0 (x > z): four points at the bottom corners, 1 cm deep, face normal.
+    {
+        const auto manifolds = collideAll(*mesh, box, at({0.5f, 0.19f, -0.5f}));
+        QCOMPARE(manifolds.size(), std::size_t(1));
+        const ContactManifold& m = manifolds[0];
+        checkInvariants(m);
+        QCOMPARE(m.pointCount, 4);
+        QVERIFY(glm::length(m.normal - kUp) < 1e-6f);
+        std::set<std::pair<int, int>> corners;
+        for (int k = 0; k < 4; ++k) {
+            QVERIFY(std::abs(m.points[k].separation + 0.01f) < 1e-5f);
+            QVERIFY(std::abs(m.points[k].pointA.y) < 1e-5f);  // on the triangle
+            corners.insert({int(std::lround((m.points[k].pointB.x - 0.5f) / 0.2f)), int(std::lround((m.points[k].pointB.z + 0.5f) / 0.2f))});
+        }
+        QCOMPARE(corners, (std::set<std::pair<int, int>>{{-1, -1}, {-1, 1}, {1, -1}, {1, 1}}));
+    }
+    // Over the seam, turned 30 degrees: each triangle holds its share of the footprint, all flat.
+    const auto manifolds = collideAll(*mesh, box, at({0.05f, 0.19f, 0.0f}, yaw(30.0f)));
+    QCOMPARE(manifolds.size(), std::size_t(2));
+    for (const ContactManifold& m : manifolds) {
+        checkInvariants(m);
+        QCOMPARE(m.pointCount, 4);
+        QVERIFY(glm::length(m.normal - kUp) < 1e-6f);
+        QVERIFY(std::abs(deepest(m) + 0.01f) < 1e-5f);
+    }
+}
+
+void TestTriangleMesh::restingShapesGetFullManifolds_data() {
+    QTest::addColumn<Shape>("shape");
+    QTest::addColumn<Transform>("pose");  // its height is set so the lowest point is 1 cm deep
+    QTest::addColumn<int>("points");
+    const Quat onSide = glm::angleAxis(0.5f * kPi, Vec3(0, 0, 1));
+    const Quat onEdge = glm::angleAxis(0.25f * kPi, Vec3(0, 0, 1));
+    const Vec3 diagonal = glm::normalize(Vec3(1, 1, 1));
+    const Quat onCorner = glm::angleAxis(std::acos(glm::dot(diagonal, kUp)), glm::normalize(glm::cross(diagonal, kUp)));
+    QTest::newRow("sphere") << Shape::sphere(0.3f) << at({0.5f, 0, -0.4f}) << 1;
+    QTest::newRow("box on an edge") << Shape::box({0.2f, 0.2f, 0.2f}) << at({0.5f, 0, -0.4f}, onEdge) << 2;
+    QTest::newRow("box on a corner") << Shape::box({0.2f, 0.2f, 0.2f}) << at({0.5f, 0, -0.4f}, onCorner) << 1;
+    QTest::newRow("hull box flat") << Shape::convexHull(boxHull({0.2f, 0.1f, 0.2f})) << at({0.5f, 0, -0.5f}, yaw(10.0f)) << 4;
+    QTest::newRow("capsule lying") << Shape::capsule(0.1f, 0.2f) << at({0.5f, 0, -0.4f}, onSide) << 2;
+    QTest::newRow("capsule standing") << Shape::capsule(0.1f, 0.2f) << at({0.5f, 0, -0.4f}) << 1;
+    QTest::newRow("cylinder standing") << Shape::cylinder(0.15f, 0.2f) << at({0.6f, 0, -0.5f}) << 4;
+    QTest::newRow("cylinder lying") << Shape::cylinder(0.15f, 0.2f) << at({0.5f, 0, -0.4f}, onSide) << 2;
+}
+
+void TestTriangleMesh::restingShapesGetFullManifolds() {
+    QFETCH(Shape, shape);
+    QFETCH(Transform, pose);
+    QFETCH(int, points);
+    const Vec3 localDown = pose.rotateInverse(-kUp);
+    pose.position.y = -pose.rotate(support(shape, localDown)).y - 0.01f;
+    const auto mesh = flatSquare();
+    const auto manifolds = collideAll(*mesh, shape, pose);
+    QCOMPARE(manifolds.size(), std::size_t(1));  // wholly over triangle 0
+    const ContactManifold& m = manifolds[0];
+    checkInvariants(m);
+    QCOMPARE(m.pointCount, points);
+    QVERIFY2(tiltDegrees(m.normal) < 1e-3f, qPrintable(QString::number(tiltDegrees(m.normal))));
+    QVERIFY2(std::abs(deepest(m) + 0.01f) < 2e-5f, qPrintable(QString::number(deepest(m))));
+}
+
+void TestTriangleMesh::boxSlidingAcrossSeamKeepsFaceNormal_data() {
+    QTest::addColumn<float>("yawDegrees");
+    QTest::addColumn<float>("pitchDegrees");  // a slight nose-down tilt, as a sliding box has
+    QTest::newRow("square on") << 0.0f << 0.0f;
+    QTest::newRow("turned 30") << 30.0f << 0.0f;
+    QTest::newRow("edge along the seam") << 45.0f << 0.0f;
+    QTest::newRow("tilted 2 degrees") << 10.0f << 2.0f;
+}
+
+void TestTriangleMesh::boxSlidingAcrossSeamKeepsFaceNormal() {
+    QFETCH(float, yawDegrees);
+    QFETCH(float, pitchDegrees);
+    const auto mesh = flatSquare();
+    const Shape box = Shape::box({0.2f, 0.2f, 0.2f});
+    const Quat rotation = glm::angleAxis(pitchDegrees * kPi / 180.0f, Vec3(1, 0, 0)) * yaw(yawDegrees);
+    float worstTilt = 0.0f, worstUnflagged = 0.0f;
+    const int steps = 400;
+    for (int s = 0; s <= steps; ++s) {
+        // Across the diagonal seam, from over triangle 0 to over triangle 1, 5 mm deep.
+        const float f = float(s) / steps;
+        Transform pose = at(Vec3(0.45f - 0.9f * f, 0.0f, -0.45f + 0.9f * f), rotation);
+        const float bottom = -glm::dot(support(box, glm::conjugate(rotation) * -kUp), glm::conjugate(rotation) * -kUp);
+        pose.position.y = -bottom - 0.005f;
+        const auto manifolds = collideAll(*mesh, box, pose);
+        QVERIFY(!manifolds.empty());
+        float deepestHere = 0.0f;
+        for (const ContactManifold& m : manifolds) {
+            checkInvariants(m);
+            worstTilt = std::max(worstTilt, tiltDegrees(m.normal));
+            deepestHere = std::min(deepestHere, deepest(m));
+        }
+        QVERIFY2(std::abs(deepestHere + 0.005f) < 1e-4f, qPrintable(QString::number(deepestHere)));
+        for (const ContactManifold& m : collideAll(*mesh, box, pose, kAllFeaturesActive))
+            worstUnflagged = std::max(worstUnflagged, tiltDegrees(m.normal));
+    }
+    QVERIFY2(worstTilt < 1.0f, qPrintable(QString("tilt %1 degrees").arg(worstTilt)));
+    // The same slide with every edge treated as active would bump: the test can fail.
+    QVERIFY2(worstUnflagged > 5.0f || (pitchDegrees == 0.0f && yawDegrees == 0.0f),
+             qPrintable(QString("unflagged tilt %1 degrees").arg(worstUnflagged)));
+}
+
+void TestTriangleMesh::sphereRollingOverSeamKeepsFaceNormal() {
+    const auto mesh = flatSquare();
+    const Shape sphere = Shape::sphere(0.5f);
+    float worstTilt = 0.0f, worstUnflagged = 0.0f;
+    for (int s = 0; s <= 400; ++s) {
+        const float f = float(s) / 400.0f;
+        const Transform pose = at({0.3f - 0.6f * f, 0.49f, -0.3f + 0.6f * f});
+        const auto manifolds = collideAll(*mesh, sphere, pose);
+        QVERIFY(!manifolds.empty());
+        for (const ContactManifold& m : manifolds) {
+            checkInvariants(m);
+            worstTilt = std::max(worstTilt, tiltDegrees(m.normal));
+            QVERIFY(std::abs(deepest(m) + 0.01f) < 1e-5f);
+        }
+        for (const ContactManifold& m : collideAll(*mesh, sphere, pose, kAllFeaturesActive))
+            worstUnflagged = std::max(worstUnflagged, tiltDegrees(m.normal));
+    }
+    QVERIFY2(worstTilt < 1.0f, qPrintable(QString("tilt %1 degrees").arg(worstTilt)));
+    QVERIFY2(worstUnflagged > 5.0f, qPrintable(QString("unflagged tilt %1 degrees").arg(worstUnflagged)));
+}
+
+void TestTriangleMesh::activeBoundaryEdgeKeepsItsNormal() {
+    // A sphere beside the square's outer edge x = 1, its centre 0.2 m out and 0.1 m up: the edge
+    // normal points from the edge to the centre.
+    const auto mesh = flatSquare();
+    const auto manifolds = collideAll(*mesh, Shape::sphere(0.25f), at({1.2f, 0.1f, -0.3f}));
+    QCOMPARE(manifolds.size(), std::size_t(1));
+    const ContactManifold& m = manifolds[0];
+    checkInvariants(m);
+    const Vec3 expected = glm::normalize(Vec3(0.2f, 0.1f, 0.0f));
+    QVERIFY(glm::length(m.normal - expected) < 1e-5f);
+    QVERIFY(std::abs(m.points[0].separation - (glm::length(Vec3(0.2f, 0.1f, 0)) - 0.25f)) < 1e-5f);
+    // A box leaning over the same edge gets it too (edge against edge, not the face).
+    const auto boxManifolds = collideAll(*mesh, Shape::box({0.2f, 0.2f, 0.2f}),
+                                         at({1.19f, 0.0f, -0.3f}, glm::angleAxis(0.25f * kPi, Vec3(0, 0, 1))));
+    QCOMPARE(boxManifolds.size(), std::size_t(1));
+    checkInvariants(boxManifolds[0]);
+    QVERIFY2(tiltDegrees(boxManifolds[0].normal) > 30.0f, qPrintable(QString::number(tiltDegrees(boxManifolds[0].normal))));
+}
+
+void TestTriangleMesh::oneSidedWallIgnoresShapesBehind() {
+    // A wall in the plane x = 0 facing +x.
+    const auto wall = TriangleMesh::build({{0, -1, -1}, {0, -1, 1}, {0, 1, 1}, {0, 1, -1}}, {{0, 2, 1}, {0, 3, 2}}).mesh;
+    QVERIFY(glm::length(wall->triangle(0).normal - Vec3(1, 0, 0)) < 1e-6f);
+    const Shape sphere = Shape::sphere(0.5f);
+    // In front, 0.1 m from the wall: pushed out along +x by 0.4 m.
+    const auto front = collideAll(*wall, sphere, at({0.1f, 0.2f, 0.1f}));
+    QVERIFY(!front.empty());
+    for (const ContactManifold& m : front) {
+        checkInvariants(m);
+        QVERIFY(glm::length(m.normal - Vec3(1, 0, 0)) < 1e-6f);
+        QVERIFY(std::abs(deepest(m) + 0.4f) < 1e-5f);
+    }
+    // Its centre behind the wall, however deep: no contact (one-sided, documented in collide_mesh.h).
+    for (float x : {-0.01f, -0.1f, -0.45f})
+        QVERIFY(collideAll(*wall, sphere, at({x, 0.2f, 0.1f})).empty());
+    QVERIFY(collideAll(*wall, Shape::box({0.3f, 0.3f, 0.3f}), at({-0.1f, 0.0f, 0.0f})).empty());
+}
+
+void TestTriangleMesh::beyondSpeculativeDistanceGivesNothing() {
+    const auto mesh = flatSquare();
+    QVERIFY(collideAll(*mesh, Shape::box({0.2f, 0.2f, 0.2f}), at({0.5f, 0.2f + kSpeculative + 1e-3f, -0.5f})).empty());
+    const auto near = collideAll(*mesh, Shape::box({0.2f, 0.2f, 0.2f}), at({0.5f, 0.2f + 0.5f * kSpeculative, -0.5f}));
+    QCOMPARE(near.size(), std::size_t(1));
+    QVERIFY(std::abs(deepest(near[0]) - 0.5f * kSpeculative) < 1e-5f);
+    QVERIFY(collideAll(*mesh, Shape::sphere(0.2f), at({3.0f, 0.1f, 0.0f})).empty());
+}
+
+void TestTriangleMesh::collideAllocatesNothing() {
+    const auto mesh = flatSquare();
+    const Triangle tri = mesh->triangle(0);
+    const Shape shapes[] = {Shape::sphere(0.3f), Shape::box({0.2f, 0.2f, 0.2f}), Shape::capsule(0.1f, 0.2f),
+                            Shape::cylinder(0.2f, 0.2f), Shape::convexHull(boxHull({0.2f, 0.2f, 0.2f}))};
+    int touching = 0;
+    startCountingAllocations();
+    for (const Shape& shape : shapes) {
+        ContactManifold m;
+        touching += collideTriangleConvex(tri, shape, at({0.5f, 0.15f, -0.5f}, yaw(20.0f)), kSpeculative, m);
+    }
+    QCOMPARE(stopCountingAllocations(), std::size_t(0));
+    QCOMPARE(touching, 5);
 }
 
 QTEST_APPLESS_MAIN(TestTriangleMesh)
