@@ -1,10 +1,12 @@
 // Static triangle surfaces: TriangleMesh validation, adjacency and active edges, the BVH query and
 // ray cast (both against brute force over every triangle), and the narrow phase of convex shapes
-// against triangles (collideTriangleConvex): full manifolds, internal edges, one-sidedness.
+// against triangles (collideTriangleConvex): full manifolds, internal edges, one-sidedness; the
+// height field against the mesh made of the same samples.
 
 #include "support/allocation_counter.h"
 #include "simcore/collision/collide_mesh.h"
 #include "simcore/shapes/convex_hull.h"
+#include "simcore/shapes/height_field.h"
 #include "simcore/shapes/triangle_mesh.h"
 
 #include <QtTest>
@@ -51,6 +53,33 @@ Aabb boundsOf(const Triangle& t) {
     Aabb box;
     for (const Vec3& v : t.vertices) box.grow(v);
     return box;
+}
+
+// A rolling height field of rows x columns samples.
+std::shared_ptr<const HeightField> rollingField(int rows, int columns, float cell, unsigned seed) {
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<float> bump(-0.3f, 0.3f);
+    std::vector<float> heights;
+    for (int r = 0; r < rows; ++r)
+        for (int c = 0; c < columns; ++c) heights.push_back(0.5f * (std::sin(0.3f * c) + std::cos(0.2f * r) + bump(random)));
+    auto result = HeightField::build(rows, columns, cell, 2.0f, std::move(heights));
+    return result.field;
+}
+
+// The same surface as a TriangleMesh, written from the layout documented in height_field.h.
+std::shared_ptr<const TriangleMesh> meshOf(const HeightField& field) {
+    std::vector<Vec3> vertices;
+    for (int r = 0; r < field.rows(); ++r)
+        for (int c = 0; c < field.columns(); ++c) vertices.push_back(field.sample(r, c));
+    const int n = field.columns();
+    auto at = [n](int r, int c) { return std::uint32_t(r * n + c); };
+    std::vector<Indices> triangles;
+    for (int r = 0; r + 1 < field.rows(); ++r)
+        for (int c = 0; c + 1 < n; ++c) {
+            triangles.push_back({at(r, c), at(r + 1, c), at(r + 1, c + 1)});
+            triangles.push_back({at(r, c), at(r + 1, c + 1), at(r, c + 1)});
+        }
+    return TriangleMesh::build(std::move(vertices), std::move(triangles)).mesh;
 }
 
 const Vec3 kUp(0.0f, 1.0f, 0.0f);
@@ -129,6 +158,11 @@ private slots:
     void oneSidedWallIgnoresShapesBehind();
     void beyondSpeculativeDistanceGivesNothing();
     void collideAllocatesNothing();
+    void heightFieldValidation_data();
+    void heightFieldValidation();
+    void heightFieldMatchesItsMesh();
+    void heightFieldQueryAndRayMatchBruteForce();
+    void heightFieldAndMeshGiveTheSameContacts();
 };
 
 void TestTriangleMesh::validationNamesWhatIsWrong_data() {
@@ -494,6 +528,139 @@ void TestTriangleMesh::collideAllocatesNothing() {
     }
     QCOMPARE(stopCountingAllocations(), std::size_t(0));
     QCOMPARE(touching, 5);
+}
+
+void TestTriangleMesh::heightFieldValidation_data() {
+    QTest::addColumn<int>("rows");
+    QTest::addColumn<int>("columns");
+    QTest::addColumn<float>("cellSize");
+    QTest::addColumn<float>("heightScale");
+    QTest::addColumn<QVector<float>>("heights");
+    QTest::addColumn<QString>("expected");
+    const QVector<float> four{0, 0, 0, 0};
+    QTest::newRow("one row") << 1 << 4 << 1.0f << 1.0f << four << "at least 2 rows and 2 columns, got 1 x 4";
+    QTest::newRow("too many") << 2000 << 2000 << 1.0f << 1.0f << four << "more than 2000000 triangles";
+    QTest::newRow("wrong count") << 2 << 3 << 1.0f << 1.0f << four << "needs 6 heights, got 4";
+    QTest::newRow("zero cell") << 2 << 2 << 0.0f << 1.0f << four << "cell size must be positive";
+    QTest::newRow("nan cell") << 2 << 2 << std::nanf("") << 1.0f << four << "cell size must be positive";
+    QTest::newRow("too wide") << 2 << 2 << 2e6f << 1.0f << four << "within 1000000 m";
+    QTest::newRow("negative scale") << 2 << 2 << 1.0f << -1.0f << four << "height scale must be finite and positive";
+    QTest::newRow("nan height") << 2 << 2 << 1.0f << 1.0f << QVector<float>{0, 0, std::nanf(""), 0}
+                                << "height (row 1, column 0) is not finite";
+    QTest::newRow("too high") << 2 << 2 << 1.0f << 10.0f << QVector<float>{0, 2e5f, 0, 0}
+                              << "height (row 0, column 1) is beyond 1000000 m once scaled";
+}
+
+void TestTriangleMesh::heightFieldValidation() {
+    QFETCH(int, rows);
+    QFETCH(int, columns);
+    QFETCH(float, cellSize);
+    QFETCH(float, heightScale);
+    QFETCH(QVector<float>, heights);
+    QFETCH(QString, expected);
+    const auto result = HeightField::build(rows, columns, cellSize, heightScale, {heights.begin(), heights.end()});
+    QVERIFY(!result.field);
+    QVERIFY2(QString::fromStdString(result.error).contains(expected), result.error.c_str());
+}
+
+void TestTriangleMesh::heightFieldMatchesItsMesh() {
+    const auto field = rollingField(41, 61, 0.5f, 3);
+    QVERIFY(field);
+    QCOMPARE(field->triangleCount(), std::size_t(2 * 40 * 60));
+    const auto mesh = meshOf(*field);
+    QCOMPARE(mesh->triangleCount(), field->triangleCount());
+    int inactive = 0;
+    for (std::uint32_t t = 0; t < field->triangleCount(); ++t) {
+        const Triangle a = field->triangle(t), b = mesh->triangle(t);
+        for (int k = 0; k < 3; ++k) QCOMPARE(a.vertices[k], b.vertices[k]);
+        QCOMPARE(a.normal, b.normal);
+        QVERIFY(a.normal.y > 0.0f);  // the front faces up
+        QCOMPARE(int(a.flags), int(b.flags));
+        for (int e = 0; e < 3; ++e) inactive += !isEdgeActive(a.flags, e);
+    }
+    QVERIFY(inactive > 1000);  // the gentle terrain has many smooth seams
+    QCOMPARE(field->bounds().min, mesh->bounds().min);
+    QCOMPARE(field->bounds().max, mesh->bounds().max);
+}
+
+void TestTriangleMesh::heightFieldQueryAndRayMatchBruteForce() {
+    const auto field = rollingField(101, 101, 1.0f, 9);  // 20 000 triangles
+    std::mt19937 random(17);
+    std::uniform_real_distribution<float> position(-10.0f, 110.0f), height(-3.0f, 4.0f), size(0.01f, 8.0f), unit(-1, 1);
+    std::size_t found = 0;
+    for (int q = 0; q < 300; ++q) {
+        const Aabb box = Aabb::fromCenterHalfExtents({position(random), height(random), position(random)},
+                                                     {size(random), size(random), size(random)});
+        std::set<std::uint32_t> expected;
+        for (std::uint32_t t = 0; t < field->triangleCount(); ++t)
+            if (boundsOf(field->triangle(t)).overlaps(box)) expected.insert(t);
+        std::vector<std::uint32_t> visited;
+        field->forEachTriangleOverlapping(box, [&](std::uint32_t t) { visited.push_back(t); });
+        QCOMPARE(visited.size(), std::set<std::uint32_t>(visited.begin(), visited.end()).size());
+        QVERIFY(std::set<std::uint32_t>(visited.begin(), visited.end()) == expected);
+        found += visited.size();
+    }
+    QVERIFY(found > 1000);
+    int hits = 0;
+    for (int q = 0; q < 1000; ++q) {
+        const Vec3 origin(position(random), height(random), position(random));
+        const Vec3 direction = 60.0f * Vec3(unit(random), unit(random), unit(random));
+        std::optional<float> expected;
+        for (std::uint32_t t = 0; t < field->triangleCount(); ++t)
+            if (auto hit = rayCastTriangle(field->triangle(t), origin, direction, 1.0f))
+                if (!expected || hit->fraction < *expected) expected = hit->fraction;
+        const auto hit = field->rayCast(origin, direction);
+        QCOMPARE(hit.has_value(), expected.has_value());
+        if (!hit) continue;
+        ++hits;
+        QCOMPARE(hit->fraction, *expected);
+    }
+    QVERIFY(hits > 200);
+    // Straight down onto a sample's cell.
+    const auto down = field->rayCast({10.5f, 50, 20.5f}, {0, -100, 0});
+    QVERIFY(down && down->frontFace && down->normal.y > 0.0f);
+}
+
+void TestTriangleMesh::heightFieldAndMeshGiveTheSameContacts() {
+    const auto field = rollingField(41, 41, 0.5f, 21);
+    const auto mesh = meshOf(*field);
+    const Shape shapes[] = {Shape::sphere(0.4f), Shape::box({0.5f, 0.3f, 0.4f}), Shape::capsule(0.2f, 0.4f)};
+    std::mt19937 random(23);
+    std::uniform_real_distribution<float> position(2.0f, 18.0f), unit(-1.0f, 1.0f);
+    int manifolds = 0;
+    for (int q = 0; q < 300; ++q) {
+        const Shape& shape = shapes[q % 3];
+        Transform pose = at({position(random), 0, position(random)},
+                            glm::normalize(Quat(unit(random), unit(random), unit(random), unit(random))));
+        const auto under = field->rayCast(pose.position + Vec3(0, 50, 0), {0, -100, 0});
+        QVERIFY(under);
+        pose.position.y = under->point.y + 0.3f * unit(random) + 0.3f;
+        Aabb box = worldBounds(shape, pose);
+        box.min -= Vec3(kSpeculative);
+        box.max += Vec3(kSpeculative);
+        std::vector<std::uint32_t> fromField, fromMesh;
+        field->forEachTriangleOverlapping(box, [&](std::uint32_t t) { fromField.push_back(t); });
+        mesh->forEachTriangleOverlapping(box, [&](std::uint32_t t) { fromMesh.push_back(t); });
+        std::sort(fromField.begin(), fromField.end());
+        std::sort(fromMesh.begin(), fromMesh.end());
+        QVERIFY(fromField == fromMesh);
+        for (std::uint32_t t : fromField) {
+            ContactManifold a, b;
+            const bool touchA = collideTriangleConvex(field->triangle(t), shape, pose, kSpeculative, a);
+            const bool touchB = collideTriangleConvex(mesh->triangle(t), shape, pose, kSpeculative, b);
+            QCOMPARE(touchA, touchB);
+            if (!touchA) continue;
+            ++manifolds;
+            QCOMPARE(a.normal, b.normal);
+            QCOMPARE(a.pointCount, b.pointCount);
+            for (int k = 0; k < a.pointCount; ++k) {
+                QCOMPARE(a.points[k].pointA, b.points[k].pointA);
+                QCOMPARE(a.points[k].separation, b.points[k].separation);
+                QCOMPARE(a.points[k].featureId, b.points[k].featureId);
+            }
+        }
+    }
+    QVERIFY(manifolds > 200);
 }
 
 QTEST_APPLESS_MAIN(TestTriangleMesh)
