@@ -62,6 +62,7 @@ struct Setup {
     const Triangle& triangle;
     PlacedCore core;
     float size;  // the triangle's longest edge (m), for relative tolerances
+    float separatedBeyond;  // (m) an axis separating by more than this ends the search: no contact
 
     Vec3 coreSupport(const Vec3& worldDirection) const {
         return core.transform.apply(core.localSupport(core.transform.rotateInverse(worldDirection)));
@@ -135,7 +136,7 @@ void facePolygon(const Shape& shape, const Transform& t, int face, Polygon& out)
 }
 
 // The SAT axes of the shape against the triangle (the triangle's own normal is tried first, by
-// the caller).
+// the caller). Stops early once an axis separates beyond setup.separatedBeyond.
 void findBestAxis(const Setup& setup, const Shape& shape, const Transform& t, Axis& best) {
     const Triangle& tri = setup.triangle;
     const Vec3 edges[3] = {tri.vertices[1] - tri.vertices[0], tri.vertices[2] - tri.vertices[1],
@@ -146,6 +147,10 @@ void findBestAxis(const Setup& setup, const Shape& shape, const Transform& t, Ax
         a.kind = AxisKind::ShapeFace;
         a.shapeFace = f;
         consider(setup, -faceNormal(shape, t, f), false, a, faceBest);
+        if (faceBest.separation > setup.separatedBeyond) {
+            best = faceBest;
+            return;
+        }
     }
     auto edgePair = [&](int e, const Vec3& direction, const Vec3& s0, const Vec3& s1, int boxAxis) {
         Axis a;
@@ -176,6 +181,10 @@ void findBestAxis(const Setup& setup, const Shape& shape, const Transform& t, Ax
                 break;
             }
             case ShapeType::Sphere: break;
+        }
+        if (faceBest.separation > setup.separatedBeyond) {
+            best = faceBest;
+            return;
         }
     }
     if (shape.type == ShapeType::Cylinder) {
@@ -443,13 +452,15 @@ bool collideTriangleConvex(const Triangle& triangle, const Shape& shape, const T
     const Setup setup{triangle, PlacedCore(shape, transform),
                       std::sqrt(std::max({lengthSquared(triangle.vertices[1] - triangle.vertices[0]),
                                           lengthSquared(triangle.vertices[2] - triangle.vertices[1]),
-                                          lengthSquared(triangle.vertices[0] - triangle.vertices[2])}))};
+                                          lengthSquared(triangle.vertices[0] - triangle.vertices[2])})),
+                      speculativeDistance + kTriangleFacePreference};
     const float radius = setup.core.radius;
 
     Axis best;
     best.kind = AxisKind::TriangleFace;
     best.direction = n;
     best.separation = setup.separation(n);
+    if (best.separation > speculativeDistance) return false;  // the plane alone separates them
     Axis chosen = best;
     if (shape.type == ShapeType::Sphere) {
         const Vec3 q = closestPointOnTriangle(transform.position, triangle.vertices[0], triangle.vertices[1],
