@@ -21,6 +21,11 @@ std::string vec3Text(const Vec3& v) {
 
 }  // namespace
 
+bool isDegenerateTriangle(const Vec3& a, const Vec3& b, const Vec3& c) {
+    const float longest = std::max({lengthSquared(b - a), lengthSquared(c - b), lengthSquared(a - c)});
+    return !(glm::length(glm::cross(b - a, c - a)) > kSliverRatio * longest);
+}
+
 Triangle Triangle::placed(const Transform& transform) const {
     return {{transform.apply(vertices[0]), transform.apply(vertices[1]), transform.apply(vertices[2])},
             glm::normalize(transform.rotate(normal)), flags};
@@ -97,9 +102,8 @@ TriangleMesh::BuildResult TriangleMesh::build(std::vector<Vec3> vertices, std::v
         const Vec3& b = vertices[index[1]];
         const Vec3& c = vertices[index[2]];
         const Vec3 n = glm::cross(b - a, c - a);
-        const float longest = std::max({lengthSquared(b - a), lengthSquared(c - b), lengthSquared(a - c)});
         const float doubleArea = glm::length(n);
-        if (!(doubleArea > kSliverRatio * longest))
+        if (isDegenerateTriangle(a, b, c))
             return {nullptr, name + " is degenerate: vertices " + std::to_string(index[0]) + ", " +
                                  std::to_string(index[1]) + " and " + std::to_string(index[2]) +
                                  " are coincident or in a line (area " + std::to_string(0.5f * doubleArea) + " m^2)"};

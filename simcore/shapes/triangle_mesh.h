@@ -54,6 +54,11 @@ struct Triangle {
     Triangle placed(const Transform& transform) const;  // the same triangle in another frame
 };
 
+// Whether triangle abc is too thin to have a trustworthy normal (zero area, or a sliver whose
+// area is below a millionth of its longest edge squared). TriangleMesh::build refuses such
+// triangles; importers drop them.
+bool isDegenerateTriangle(const Vec3& a, const Vec3& b, const Vec3& c);
+
 // Whether an edge at vertex `edgePoint` of a triangle with unit normal `normal` is active, given the
 // neighbouring triangle across it: its unit normal and its vertex off the edge (see above).
 bool isActiveEdge(const Vec3& normal, const Vec3& edgePoint, const Vec3& neighbourNormal, const Vec3& neighbourOpposite);
