@@ -135,6 +135,7 @@ private slots:
     void fromMemoryChecksFormat();
     void hullPointsOfAPart();
     void triangleMeshFromFile();
+    void shippedFiles();
 
 private:
     QString write(const QString& name, const QByteArray& bytes) {
@@ -335,6 +336,26 @@ void TestMeshImport::triangleMeshFromFile() {
     QCOMPARE(active, 24);  // 12 box edges, seen from both sides
     const auto missing = importTriangleMesh(dir.filePath("nothere.stl").toStdString());
     QVERIFY(!missing.mesh && QString::fromStdString(missing.error).endsWith("nothere.stl: no such file"));
+}
+
+void TestMeshImport::shippedFiles() {
+    // tests/data/meshes/: the fuzzer's seeds, valid and hostile.
+    const QDir meshes(QStringLiteral(INTERPLAY_SOURCE_DIR "/tests/data/meshes"));
+    const std::pair<const char*, std::size_t> valid[] = {
+        {"box.obj", 12}, {"square.stl", 2}, {"tetrahedron_binary.stl", 4}, {"quad_embedded.gltf", 2}, {"quad.glb", 2}};
+    for (const auto& [name, triangles] : valid) {
+        const auto mesh = importMesh(meshes.filePath(name).toStdString());
+        QVERIFY2(mesh.ok(), mesh.error.c_str());
+        QCOMPARE(mesh.triangles.size(), triangles);
+    }
+    const QDir hostile(meshes.filePath("hostile"));
+    const QStringList files = hostile.entryList(QDir::Files);
+    QCOMPARE(files.size(), 6);
+    for (const QString& name : files) {
+        const auto mesh = importMesh(hostile.filePath(name).toStdString());
+        QVERIFY2(!mesh.ok() && QString::fromStdString(mesh.error).startsWith(hostile.filePath(name) + ": "),
+                 qPrintable(name + ": " + QString::fromStdString(mesh.error)));
+    }
 }
 
 QTEST_APPLESS_MAIN(TestMeshImport)
