@@ -528,6 +528,14 @@ void TestTriangleMesh::collideAllocatesNothing() {
     }
     QCOMPARE(stopCountingAllocations(), std::size_t(0));
     QCOMPARE(touching, 5);
+    // A non-finite pose gives no contact instead of NaN points.
+    const float nan = std::nanf("");
+    for (const Shape& shape : shapes) {
+        ContactManifold m;
+        QVERIFY(!collideTriangleConvex(tri, shape, at({nan, 0.1f, 0.0f}), kSpeculative, m));
+        QVERIFY(!collideTriangleConvex(tri, shape, at({0.5f, 0.1f, -0.5f}, Quat(nan, 0, 0, 0)), kSpeculative, m));
+        QCOMPARE(m.pointCount, 0);
+    }
 }
 
 void TestTriangleMesh::heightFieldValidation_data() {

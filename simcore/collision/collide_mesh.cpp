@@ -51,7 +51,7 @@ struct Axis {
     Vec3 direction{0.0f, 1.0f, 0.0f};  // unit, from the triangle to the shape
     float separation = -std::numeric_limits<float>::max();
     int shapeFace = -1;     // ShapeFace: box face (2k: +axis k, 2k+1: -axis k) or hull face
-    int triangleEdge = -1;  // EdgePair: the triangle's edge, -1 for a vertex against a cylinder's side
+    int triangleEdge = -1;  // EdgePair: the triangle's edge; -1: one point, the shape's deepest along the axis
     int boxAxis = -1;       // EdgePair with a box: the local axis its edge runs along
     Vec3 shape0{0.0f}, shape1{0.0f};  // EdgePair: the shape's edge (world); Closest: core point in shape0
     Vec3 onTriangle{0.0f};            // Closest: the triangle's point
@@ -63,6 +63,7 @@ struct Setup {
     PlacedCore core;
     float size;  // the triangle's longest edge (m), for relative tolerances
     float separatedBeyond;  // (m) an axis separating by more than this ends the search: no contact
+    Vec3 fromTriangle;      // the shape's centre minus the triangle's centroid: which way an axis points
 
     Vec3 coreSupport(const Vec3& worldDirection) const {
         return core.transform.apply(core.localSupport(core.transform.rotateInverse(worldDirection)));
@@ -74,22 +75,19 @@ struct Setup {
     float separation(const Vec3& u) const { return glm::dot(coreSupport(-u), u) - core.radius - triangleTop(u); }
 };
 
-// Considers `axis` (any length) as a separating axis from the triangle to the shape, and when
-// `eitherWay` also its reverse (edge pairs have no preferred side; a face only its outward one).
-void consider(const Setup& setup, Vec3 axis, bool eitherWay, Axis candidate, Axis& best) {
+// Considers `axis` (any length) as a separating axis from the triangle to the shape. When
+// `orient`, it is first turned to point from the triangle's centroid towards the shape's centre
+// (edge pairs have no side of their own; a face normal is tried only outward).
+void consider(const Setup& setup, Vec3 axis, bool orient, const Axis& candidate, Axis& best) {
     const float length = glm::length(axis);
     if (!(length > 1e-6f)) return;
     axis /= length;
-    float separation = setup.separation(axis);
-    const float reversed = eitherWay ? setup.separation(-axis) : -std::numeric_limits<float>::max();
-    if (reversed > separation) {
-        separation = reversed;
-        axis = -axis;
-    }
+    if (orient && glm::dot(axis, setup.fromTriangle) < 0.0f) axis = -axis;
+    const float separation = setup.separation(axis);
     if (separation > best.separation) {
-        candidate.direction = axis;
-        candidate.separation = separation;
         best = candidate;
+        best.direction = axis;
+        best.separation = separation;
     }
 }
 
@@ -194,9 +192,8 @@ void findBestAxis(const Setup& setup, const Shape& shape, const Transform& t, Ax
             // rim reaches farthest out over that edge, and the edge's own side plane.
             Vec3 out = glm::cross(edges[e], tri.normal);
             Axis a;
-            a.kind = AxisKind::EdgePair;
-            a.triangleEdge = e;
-            a.boxAxis = -1;
+            a.kind = AxisKind::EdgePair;  // met at the rim's deepest point: no segment to pair with
+            a.triangleEdge = -1;
             consider(setup, out, true, a, faceBest);
             const Vec3 radial = -out - glm::dot(-out, axis) * axis;
             if (lengthSquared(radial) > 1e-12f) consider(setup, glm::cross(edges[e], glm::cross(axis, radial)), true, a, faceBest);
@@ -231,7 +228,7 @@ void findBestAxis(const Setup& setup, const Shape& shape, const Transform& t, Ax
             a.kind = AxisKind::Closest;
             a.onTriangle = onTriangle;
             a.shape0 = onCore;
-            consider(setup, onCore - onTriangle, true, a, faceBest);
+            consider(setup, onCore - onTriangle, false, a, faceBest);  // already from the triangle to the core
         }
     }
     if (faceBest.separation > best.separation + kTriangleFacePreference) best = faceBest;
@@ -445,6 +442,10 @@ void addPoint(Candidates& into, const Vec3& core, float radius, const Vec3& u, f
 bool collideTriangleConvex(const Triangle& triangle, const Shape& shape, const Transform& transform,
                            float speculativeDistance, ContactManifold& out) {
     out.pointCount = 0;
+    // A non-finite pose or triangle gives no contact rather than spreading NaN into the solver.
+    if (!isFinite(transform.position) || !isFinite(transform.rotation) || !isFinite(triangle.normal) ||
+        !isFinite(triangle.vertices[0]) || !isFinite(triangle.vertices[1]) || !isFinite(triangle.vertices[2]))
+        return false;
     const Vec3& n = triangle.normal;
     const Vec3 centre = transform.apply(localBounds(shape).center());
     if (glm::dot(centre - triangle.vertices[0], n) < 0.0f) return false;  // behind: one-sided
@@ -453,7 +454,8 @@ bool collideTriangleConvex(const Triangle& triangle, const Shape& shape, const T
                       std::sqrt(std::max({lengthSquared(triangle.vertices[1] - triangle.vertices[0]),
                                           lengthSquared(triangle.vertices[2] - triangle.vertices[1]),
                                           lengthSquared(triangle.vertices[0] - triangle.vertices[2])})),
-                      speculativeDistance + kTriangleFacePreference};
+                      speculativeDistance + kTriangleFacePreference,
+                      centre - (triangle.vertices[0] + triangle.vertices[1] + triangle.vertices[2]) / 3.0f};
     const float radius = setup.core.radius;
 
     Axis best;
@@ -501,6 +503,11 @@ bool collideTriangleConvex(const Triangle& triangle, const Shape& shape, const T
             break;
         }
         case AxisKind::ShapeFace: {
+            if (shape.type == ShapeType::ConvexHull &&
+                shape.hull->faces()[chosen.shapeFace].vertexCount > std::uint32_t(kMaxPolygonFace)) {
+                addPoint(candidates, setup.coreSupport(-u), radius, u, chosen.separation, kIdShapeFace, speculativeDistance);
+                break;
+            }
             Polygon face;
             facePolygon(shape, transform, chosen.shapeFace, face);
             const Vec3 faceOut = -u;  // the face's outward normal, towards the triangle
