@@ -1,13 +1,13 @@
 #!/usr/bin/env bash
 # Short libFuzzer runs of the fuzz targets in fuzz/ (built with clang, ASan + UBSan, into
-# build-asan/), both at once (one core each). A crash, a hang (an input over 10 s), a leak or an
+# build-asan/), all at once (one core each). A crash, a hang (an input over 10 s), a leak or an
 # allocation beyond 2 GB fails the run; the input that did it is saved in build-asan/fuzz-artifacts/
 # and should be added to tests/data/fuzz/TARGET/ as a regression input (ctest replays that folder).
 #   ./scripts/fuzz.sh [SECONDS]     seconds per target (default 60, or $FUZZ_SECONDS)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 seconds="${1:-${FUZZ_SECONDS:-60}}"
-targets=(scene_load scene_step)
+targets=(scene_load scene_step mesh_import)
 max_len=16384
 
 "$root/scripts/install-deps.sh"
@@ -25,10 +25,16 @@ mkdir -p "$asan_build/fuzz-artifacts"
 pids=()
 for t in "${targets[@]}"; do
     mkdir -p "$asan_build/fuzz-corpus/$t"
+    # The scene targets start from scenes with the scene dictionary; the importer from mesh files.
+    if [ "$t" = mesh_import ]; then
+        inputs=(-max_len=$max_len "$asan_build/fuzz-corpus/$t" "$root/tests/data/fuzz/$t" "$root/tests/data/meshes"
+                "$root/tests/data/meshes/hostile")
+    else
+        inputs=(-max_len=$max_len -dict="$root/fuzz/scene.dict" "$asan_build/fuzz-corpus/$t" "$root/fuzz/corpus"
+                "$root/tests/data/fuzz/$t" "$seeds")
+    fi
     "$asan_build/fuzz/fuzz_$t" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=2048 \
-        -max_len=$max_len -dict="$root/fuzz/scene.dict" -use_value_profile=1 -print_final_stats=1 \
-        -artifact_prefix="$asan_build/fuzz-artifacts/$t-" \
-        "$asan_build/fuzz-corpus/$t" "$root/fuzz/corpus" "$root/tests/data/fuzz/$t" "$seeds" \
+        -use_value_profile=1 -print_final_stats=1 -artifact_prefix="$asan_build/fuzz-artifacts/$t-" "${inputs[@]}" \
         >"$asan_build/fuzz-$t.log" 2>&1 &
     pids+=($!)
 done

@@ -1,0 +1,236 @@
+#include "simcore/io/mesh_import.h"
+
+#include "simcore/settings_schema.h"
+#include "simcore/shapes/convex_hull.h"
+
+#include <assimp/BaseImporter.h>
+#include <assimp/Importer.hpp>
+#include <assimp/importerdesc.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+
+namespace simcore {
+
+namespace {
+
+constexpr std::string_view kSupportedFormats = "obj, stl, gltf or glb";
+
+std::string lowercase(std::string_view text) {
+    std::string out(text);
+    for (char& c : out) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return out;
+}
+
+bool isSupported(std::string_view format) {
+    return format == "obj" || format == "stl" || format == "gltf" || format == "glb";
+}
+
+// The file's up axis turned to +y: a rotation, so handedness and windings are kept.
+Vec3 toYUp(const aiVector3D& v, UpAxis up) {
+    switch (up) {
+        case UpAxis::Z: return {v.x, v.z, -v.y};
+        case UpAxis::X: return {-v.y, v.x, v.z};
+        case UpAxis::Y: break;
+    }
+    return {v.x, v.y, v.z};
+}
+
+std::string checkOptions(const MeshImportOptions& options) {
+    for (int k = 0; k < 3; ++k)
+        if (!isFinite(options.scale[k]) || options.scale[k] == 0.0f)
+            return "the scale must be finite and non-zero on every axis";
+    return {};
+}
+
+// Copies the triangles of every mesh in the scene (node transforms already applied).
+ImportedMesh collect(const aiScene& scene, std::string_view name, const MeshImportOptions& options) {
+    ImportedMesh out;
+    const std::string prefix = std::string(name) + ": ";
+    std::size_t faces = 0, vertices = 0;
+    for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
+        faces += scene.mMeshes[m]->mNumFaces;
+        vertices += scene.mMeshes[m]->mNumVertices;
+    }
+    if (faces > options.maxTriangles) {
+        out.error = prefix + "has " + std::to_string(faces) + " triangles; at most " +
+                    std::to_string(options.maxTriangles) + " are allowed";
+        return out;
+    }
+    if (vertices > kMaxMeshVertices) {
+        out.error = prefix + "has " + std::to_string(vertices) + " vertices; at most " +
+                    std::to_string(kMaxMeshVertices) + " are allowed";
+        return out;
+    }
+    const bool mirrored = ((options.scale.x < 0.0f) != (options.scale.y < 0.0f)) != (options.scale.z < 0.0f);
+    out.vertices.reserve(vertices);
+    out.triangles.reserve(faces);
+    for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
+        const aiMesh& mesh = *scene.mMeshes[m];
+        const std::uint32_t base = std::uint32_t(out.vertices.size());
+        for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
+            const Vec3 p = toYUp(mesh.mVertices[v], options.upAxis) * options.scale;
+            if (!isFinite(p) || glm::any(glm::greaterThan(glm::abs(p), Vec3(kMaxMeshCoordinate)))) {
+                out.error = prefix + "vertex " + std::to_string(v) + " of mesh " + std::to_string(m) +
+                            " is not finite or beyond " + std::to_string(int(kMaxMeshCoordinate)) + " m once scaled";
+                return out;
+            }
+            out.vertices.push_back(p);
+        }
+        for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+            const aiFace& face = mesh.mFaces[f];
+            if (face.mNumIndices != 3) continue;  // points and lines: not part of a surface
+            TriangleMesh::Indices t{};
+            bool inRange = true;
+            for (int k = 0; k < 3; ++k) {
+                inRange = inRange && face.mIndices[k] < mesh.mNumVertices;
+                t[k] = base + (inRange ? face.mIndices[k] : 0u);
+            }
+            if (!inRange) {
+                out.error = prefix + "face " + std::to_string(f) + " of mesh " + std::to_string(m) +
+                            " uses a vertex the mesh does not have";
+                return out;
+            }
+            if (mirrored) std::swap(t[1], t[2]);
+            if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0] ||
+                isDegenerateTriangle(out.vertices[t[0]], out.vertices[t[1]], out.vertices[t[2]])) {
+                ++out.droppedTriangles;
+                continue;
+            }
+            out.triangles.push_back(t);
+        }
+    }
+    if (out.triangles.empty())
+        out.error = prefix + (out.droppedTriangles > 0 ? "has only degenerate triangles" : "contains no triangles");
+    return out;
+}
+
+constexpr unsigned kPostProcess = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_SortByPType |
+                                  aiProcess_PreTransformVertices | aiProcess_ValidateDataStructure;
+
+void configure(Assimp::Importer& importer) {
+    // Points and lines are dropped by SortByPType instead of being kept as degenerate meshes.
+    importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+    // Only the readers of the supported formats stay: when the named reader fails, assimp tries
+    // every other one on the bytes, and forty parsers are forty times the surface a hostile file
+    // can reach. Unregistered readers are the caller's to delete.
+    for (std::size_t i = importer.GetImporterCount(); i-- > 0;) {
+        const aiImporterDesc* description = importer.GetImporterInfo(i);
+        const std::string extensions = description && description->mFileExtensions ? description->mFileExtensions : "";
+        bool keep = false;
+        std::size_t start = 0;
+        while (start < extensions.size()) {
+            const std::size_t end = std::min(extensions.find(' ', start), extensions.size());
+            keep = keep || isSupported(extensions.substr(start, end - start));
+            start = end + 1;
+        }
+        if (keep) continue;
+        Assimp::BaseImporter* reader = importer.GetImporter(i);
+        if (importer.UnregisterLoader(reader) == aiReturn_SUCCESS) delete reader;
+    }
+}
+
+}  // namespace
+
+ImportedMesh importMeshFromMemory(const void* data, std::size_t size, std::string_view format, std::string_view name,
+                                  const MeshImportOptions& options) {
+    ImportedMesh out;
+    const std::string prefix = std::string(name) + ": ";
+    const std::string fmt = lowercase(format);
+    if (!isSupported(fmt)) {
+        out.error = prefix + "unsupported format \"" + fmt + "\" (use " + std::string(kSupportedFormats) + ")";
+        return out;
+    }
+    if (std::string problem = checkOptions(options); !problem.empty()) {
+        out.error = prefix + problem;
+        return out;
+    }
+    if (size == 0) {
+        out.error = prefix + "is empty";
+        return out;
+    }
+    if (size > options.maxFileBytes) {
+        out.error = prefix + "is " + std::to_string(size) + " bytes; at most " + std::to_string(options.maxFileBytes) +
+                    " are read";
+        return out;
+    }
+    Assimp::Importer importer;
+    configure(importer);
+    const aiScene* scene = importer.ReadFileFromMemory(data, size, kPostProcess, fmt.c_str());
+    if (!scene || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE)) {
+        const std::string why = importer.GetErrorString();
+        out.error = prefix + "cannot be read as " + fmt + (why.empty() ? "" : " (" + why + ")");
+        return out;
+    }
+    return collect(*scene, name, options);
+}
+
+ImportedMesh importMesh(const std::filesystem::path& file, const MeshImportOptions& options) {
+    ImportedMesh out;
+    const std::string name = file.string();
+    std::error_code ec;
+    if (!std::filesystem::exists(file, ec)) {
+        out.error = name + ": no such file";
+        return out;
+    }
+    if (!std::filesystem::is_regular_file(file, ec)) {
+        out.error = name + ": not a regular file";
+        return out;
+    }
+    const std::string format = lowercase(file.extension().string().substr(file.extension().empty() ? 0 : 1));
+    if (!isSupported(format)) {
+        out.error = name + ": unsupported format \"" + file.extension().string() + "\" (use " +
+                    std::string(kSupportedFormats) + ")";
+        return out;
+    }
+    if (std::string problem = checkOptions(options); !problem.empty()) {
+        out.error = name + ": " + problem;
+        return out;
+    }
+    const std::uintmax_t bytes = std::filesystem::file_size(file, ec);
+    if (ec) {
+        out.error = name + ": cannot be read (" + ec.message() + ")";
+        return out;
+    }
+    if (bytes == 0) {
+        out.error = name + ": is empty";
+        return out;
+    }
+    if (bytes > options.maxFileBytes) {
+        out.error = name + ": is " + std::to_string(bytes) + " bytes; at most " + std::to_string(options.maxFileBytes) +
+                    " are read";
+        return out;
+    }
+    // Through assimp's file system, so a .gltf can name buffers beside it.
+    Assimp::Importer importer;
+    configure(importer);
+    const aiScene* scene = importer.ReadFile(name, kPostProcess);
+    if (!scene || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE)) {
+        const std::string why = importer.GetErrorString();
+        out.error = name + ": cannot be read as " + format + (why.empty() ? "" : " (" + why + ")");
+        return out;
+    }
+    return collect(*scene, name, options);
+}
+
+TriangleMesh::BuildResult importTriangleMesh(const std::filesystem::path& file, const MeshImportOptions& options) {
+    ImportedMesh imported = importMesh(file, options);
+    if (!imported.ok()) return {nullptr, imported.error};
+    TriangleMesh::BuildResult built = TriangleMesh::build(std::move(imported.vertices), std::move(imported.triangles));
+    if (!built.mesh) built.error = file.string() + ": " + built.error;
+    return built;
+}
+
+HullPoints hullPoints(const ImportedMesh& mesh) {
+    const auto built = ConvexHull::build(mesh.vertices);
+    if (!built.hull) return {{}, "no convex hull: " + built.error};
+    if (built.hull->vertices().size() > limits::kMaxHullPoints)
+        return {{}, "the convex hull has " + std::to_string(built.hull->vertices().size()) + " corners; at most " +
+                        std::to_string(limits::kMaxHullPoints) + " are allowed"};
+    return {built.hull->vertices(), {}};
+}
+
+}  // namespace simcore

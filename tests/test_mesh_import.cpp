@@ -1,0 +1,362 @@
+// Geometry import (simcore_import): OBJ, ASCII and binary STL, glTF with an embedded buffer and
+// GLB, each written by the test, give the expected triangle counts, bounds and fronts; scale and
+// up axis are applied; missing, unsupported, empty, oversized, truncated and garbage files give a
+// message naming the file; hull points of a part.
+
+#include "simcore/io/mesh_import.h"
+#include "simcore/shapes/convex_hull.h"
+
+#include <QtTest>
+
+#include <cstring>
+#include <fstream>
+#include <string>
+#include <vector>
+
+using namespace simcore;
+
+namespace {
+
+// A box of half extents (1, 2, 3) as six quads, outward counter-clockwise.
+const char* kBoxObj = R"(# box
+v -1 -2 -3
+v  1 -2 -3
+v  1  2 -3
+v -1  2 -3
+v -1 -2  3
+v  1 -2  3
+v  1  2  3
+v -1  2  3
+f 1 4 3 2
+f 5 6 7 8
+f 1 2 6 5
+f 4 8 7 3
+f 1 5 8 4
+f 2 3 7 6
+)";
+
+// Two facets: the unit square in the xz plane, facing +y.
+const char* kSquareStl = R"(solid square
+facet normal 0 1 0
+ outer loop
+  vertex 0 0 0
+  vertex 0 0 1
+  vertex 1 0 1
+ endloop
+endfacet
+facet normal 0 1 0
+ outer loop
+  vertex 0 0 0
+  vertex 1 0 1
+  vertex 1 0 0
+ endloop
+endfacet
+endsolid square
+)";
+
+// A tetrahedron as binary STL: 80-byte header, count, 50 bytes per facet.
+std::string tetrahedronBinaryStl(std::uint32_t declaredFacets = 4) {
+    const float v[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    const int faces[4][3] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+    std::string out(80, ' ');
+    out.append(reinterpret_cast<const char*>(&declaredFacets), 4);
+    for (const auto& f : faces) {
+        const float normal[3] = {0, 0, 0};
+        out.append(reinterpret_cast<const char*>(normal), 12);
+        for (int k : f) out.append(reinterpret_cast<const char*>(v[k]), 12);
+        out.append(2, '\0');
+    }
+    return out;
+}
+
+// A glTF buffer: a quad in the xz plane facing +y (positions, then uint16 indices).
+QByteArray quadBuffer() {
+    const float positions[4][3] = {{0, 0, 0}, {2, 0, 0}, {2, 0, 2}, {0, 0, 2}};
+    const std::uint16_t indices[6] = {0, 2, 1, 0, 3, 2};
+    QByteArray bytes(reinterpret_cast<const char*>(positions), sizeof positions);
+    bytes.append(reinterpret_cast<const char*>(indices), sizeof indices);
+    return bytes;
+}
+
+QByteArray quadGltfJson(const QString& bufferUri, int bufferLength) {
+    QString json = R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+  "nodes": [{"mesh": 0, "translation": [0, 1, 0]}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+  "buffers": [{%1"byteLength": %2}],
+  "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 48}, {"buffer": 0, "byteOffset": 48, "byteLength": 12}],
+  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3", "min": [0, 0, 0], "max": [2, 0, 2]},
+                {"bufferView": 1, "componentType": 5123, "count": 6, "type": "SCALAR"}]})";
+    return json.arg(bufferUri.isEmpty() ? QString() : QString("\"uri\": \"%1\", ").arg(bufferUri)).arg(bufferLength).toUtf8();
+}
+
+QByteArray quadGlb() {
+    QByteArray json = quadGltfJson({}, 60);
+    while (json.size() % 4) json.append(' ');
+    QByteArray bin = quadBuffer();
+    while (bin.size() % 4) bin.append('\0');
+    auto u32 = [](std::uint32_t v) { return QByteArray(reinterpret_cast<const char*>(&v), 4); };
+    QByteArray out = "glTF" + u32(2) + u32(12 + 8 + json.size() + 8 + bin.size());
+    out += u32(json.size()) + "JSON" + json;
+    out += u32(bin.size()) + QByteArray("BIN\0", 4) + bin;
+    return out;
+}
+
+Aabb boundsOf(const ImportedMesh& mesh) {
+    Aabb box;
+    for (const auto& t : mesh.triangles)
+        for (std::uint32_t v : t) box.grow(mesh.vertices[v]);
+    return box;
+}
+
+bool near(const Vec3& a, const Vec3& b) { return glm::length(a - b) < 1e-5f; }
+
+Vec3 normalOf(const ImportedMesh& mesh, std::size_t t) {
+    const auto& i = mesh.triangles[t];
+    return glm::normalize(glm::cross(mesh.vertices[i[1]] - mesh.vertices[i[0]], mesh.vertices[i[2]] - mesh.vertices[i[0]]));
+}
+
+}  // namespace
+
+class TestMeshImport : public QObject {
+    Q_OBJECT
+private slots:
+    void init() { QVERIFY(dir.isValid()); }
+    void objBox();
+    void objScaleAndUpAxis();
+    void mirroringScaleKeepsFrontsOutside();
+    void stlAscii();
+    void stlBinary();
+    void gltfEmbedded();
+    void glb();
+    void degenerateTrianglesAreDropped();
+    void badFilesNameTheFile_data();
+    void badFilesNameTheFile();
+    void limitsAreApplied();
+    void fromMemoryChecksFormat();
+    void hullPointsOfAPart();
+    void triangleMeshFromFile();
+    void shippedFiles();
+
+private:
+    QString write(const QString& name, const QByteArray& bytes) {
+        const QString path = dir.filePath(name);
+        QFile file(path);
+        if (!file.open(QIODevice::WriteOnly)) qFatal("cannot write %s", qPrintable(path));
+        file.write(bytes);
+        return path;
+    }
+    QTemporaryDir dir;
+};
+
+void TestMeshImport::objBox() {
+    const auto mesh = importMesh(write("box.obj", kBoxObj).toStdString());
+    QVERIFY2(mesh.ok(), mesh.error.c_str());
+    QCOMPARE(mesh.triangles.size(), std::size_t(12));
+    QCOMPARE(mesh.vertices.size(), std::size_t(8));  // identical vertices joined
+    const Aabb box = boundsOf(mesh);
+    QVERIFY(near(box.min, {-1, -2, -3}) && near(box.max, {1, 2, 3}));
+    // Every front faces out of the box.
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+        const auto& i = mesh.triangles[t];
+        const Vec3 centre = (mesh.vertices[i[0]] + mesh.vertices[i[1]] + mesh.vertices[i[2]]) / 3.0f;
+        QVERIFY(glm::dot(normalOf(mesh, t), centre) > 0.0f);
+    }
+}
+
+void TestMeshImport::objScaleAndUpAxis() {
+    const std::string path = write("box.obj", kBoxObj).toStdString();
+    MeshImportOptions zUp;
+    zUp.upAxis = UpAxis::Z;
+    zUp.scale = {2.0f, 1.0f, 0.5f};
+    // File z (3) becomes y, file y (2) becomes -z; then x doubles and z halves.
+    const Aabb turned = boundsOf(importMesh(path, zUp));
+    QVERIFY(near(turned.min, {-2, -3, -1}) && near(turned.max, {2, 3, 1}));
+    MeshImportOptions xUp;
+    xUp.upAxis = UpAxis::X;
+    const Aabb xTurned = boundsOf(importMesh(path, xUp));
+    QVERIFY(near(xTurned.min, {-2, -1, -3}) && near(xTurned.max, {2, 1, 3}));
+}
+
+void TestMeshImport::mirroringScaleKeepsFrontsOutside() {
+    MeshImportOptions mirror;
+    mirror.scale = {-1.0f, 1.0f, 1.0f};
+    const auto mesh = importMesh(write("box.obj", kBoxObj).toStdString(), mirror);
+    QVERIFY(mesh.ok());
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+        const auto& i = mesh.triangles[t];
+        const Vec3 centre = (mesh.vertices[i[0]] + mesh.vertices[i[1]] + mesh.vertices[i[2]]) / 3.0f;
+        QVERIFY(glm::dot(normalOf(mesh, t), centre) > 0.0f);
+    }
+}
+
+void TestMeshImport::stlAscii() {
+    const auto mesh = importMesh(write("square.STL", kSquareStl).toStdString());
+    QVERIFY2(mesh.ok(), mesh.error.c_str());
+    QCOMPARE(mesh.triangles.size(), std::size_t(2));
+    const Aabb box = boundsOf(mesh);
+    QVERIFY(near(box.min, {0, 0, 0}) && near(box.max, {1, 0, 1}));
+    for (std::size_t t = 0; t < 2; ++t) QVERIFY(near(normalOf(mesh, t), {0, 1, 0}));
+    // The welded mesh has its diagonal as an inactive seam.
+    const auto built = TriangleMesh::build(mesh.vertices, mesh.triangles);
+    QVERIFY(built.mesh);
+    int inactive = 0;
+    for (std::uint32_t t = 0; t < 2; ++t)
+        for (int e = 0; e < 3; ++e) inactive += !isEdgeActive(built.mesh->triangle(t).flags, e);
+    QCOMPARE(inactive, 2);
+}
+
+void TestMeshImport::stlBinary() {
+    const std::string bytes = tetrahedronBinaryStl();
+    const auto mesh = importMesh(write("tetra.stl", QByteArray(bytes.data(), int(bytes.size()))).toStdString());
+    QVERIFY2(mesh.ok(), mesh.error.c_str());
+    QCOMPARE(mesh.triangles.size(), std::size_t(4));
+    const Aabb box = boundsOf(mesh);
+    QVERIFY(near(box.min, {0, 0, 0}) && near(box.max, {1, 1, 1}));
+}
+
+void TestMeshImport::gltfEmbedded() {
+    const QString uri = "data:application/octet-stream;base64," + QString::fromLatin1(quadBuffer().toBase64());
+    const auto mesh = importMesh(write("quad.gltf", quadGltfJson(uri, 60)).toStdString());
+    QVERIFY2(mesh.ok(), mesh.error.c_str());
+    QCOMPARE(mesh.triangles.size(), std::size_t(2));
+    const Aabb box = boundsOf(mesh);
+    QVERIFY(near(box.min, {0, 1, 0}) && near(box.max, {2, 1, 2}));  // the node's translation applied
+    for (std::size_t t = 0; t < 2; ++t) QVERIFY(near(normalOf(mesh, t), {0, 1, 0}));
+}
+
+void TestMeshImport::glb() {
+    const auto mesh = importMesh(write("quad.glb", quadGlb()).toStdString());
+    QVERIFY2(mesh.ok(), mesh.error.c_str());
+    QCOMPARE(mesh.triangles.size(), std::size_t(2));
+    const Aabb box = boundsOf(mesh);
+    QVERIFY(near(box.min, {0, 1, 0}) && near(box.max, {2, 1, 2}));
+}
+
+void TestMeshImport::degenerateTrianglesAreDropped() {
+    const auto mesh = importMesh(write("sliver.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 0 1\nf 1 2 3\nf 1 4 2\n").toStdString());
+    QVERIFY2(mesh.ok(), mesh.error.c_str());
+    QCOMPARE(mesh.triangles.size(), std::size_t(1));
+    QCOMPARE(mesh.droppedTriangles, std::size_t(1));
+    const auto none = importMesh(write("line.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n").toStdString());
+    QVERIFY(!none.ok());
+    QVERIFY2(QString::fromStdString(none.error).contains("line.obj: has only degenerate triangles"), none.error.c_str());
+}
+
+void TestMeshImport::badFilesNameTheFile_data() {
+    QTest::addColumn<QString>("name");
+    QTest::addColumn<QByteArray>("bytes");  // empty name: the file is not written
+    QTest::addColumn<QString>("expected");
+    const std::string stl = tetrahedronBinaryStl();
+    QTest::newRow("missing") << "missing.obj" << QByteArray() << "missing.obj: no such file";
+    QTest::newRow("unsupported") << "part.fbx" << QByteArray("x") << "part.fbx: unsupported format \".fbx\"";
+    QTest::newRow("empty") << "empty.stl" << QByteArray("") << "empty.stl: is empty";
+    QTest::newRow("binary stl truncated") << "cut.stl" << QByteArray(stl.data(), 84 + 60) << "cut.stl: cannot be read as stl";
+    QTest::newRow("binary stl lying count") << "lie.stl" << QByteArray(tetrahedronBinaryStl(1000000).data(), int(stl.size()))
+                                            << "lie.stl: cannot be read as stl";
+    QTest::newRow("glb garbage") << "junk.glb" << QByteArray("glTF\x02\0\0\0\xff\xff\xff\x7f garbage", 24) << "junk.glb: cannot be read as glb";
+    QTest::newRow("glb truncated") << "cut.glb" << quadGlb().left(100) << "cut.glb: cannot be read as glb";
+    QTest::newRow("gltf not json") << "junk.gltf" << QByteArray("{ this is not json") << "junk.gltf: cannot be read as gltf";
+    QTest::newRow("gltf missing buffer") << "nobuf.gltf" << quadGltfJson("absent.bin", 60) << "nobuf.gltf: cannot be read as gltf";
+    // A PLY file in disguise: assimp would hand it to its PLY reader; only the named formats' readers run.
+    QTest::newRow("ply named glb") << "disguised.glb"
+                                   << QByteArray("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                                 "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                                                 "end_header\n0 0 0\n1 0 0\n0 0 1\n3 0 1 2\n")
+                                   << "disguised.glb: cannot be read as glb";
+    QTest::newRow("obj garbage") << "junk.obj" << QByteArray("\x01\x02\x03 nothing here\n", 18) << "junk.obj: cannot be read as obj";
+    QTest::newRow("obj bad index") << "index.obj" << QByteArray("v 0 0 0\nv 1 0 0\nv 0 0 1\nf 1 2 9\n") << "index.obj:";
+}
+
+void TestMeshImport::badFilesNameTheFile() {
+    QFETCH(QString, name);
+    QFETCH(QByteArray, bytes);
+    QFETCH(QString, expected);
+    const QString path = name == "missing.obj" ? dir.filePath(name) : write(name, bytes);
+    const auto mesh = importMesh(path.toStdString());
+    QVERIFY(!mesh.ok());
+    qInfo("%s", mesh.error.c_str());
+    QVERIFY2(QString::fromStdString(mesh.error).contains(expected), mesh.error.c_str());
+    QVERIFY2(QString::fromStdString(mesh.error).startsWith(dir.filePath(name)), mesh.error.c_str());
+}
+
+void TestMeshImport::limitsAreApplied() {
+    const std::string path = write("box.obj", kBoxObj).toStdString();
+    MeshImportOptions few;
+    few.maxTriangles = 5;
+    const auto tooMany = importMesh(path, few);
+    QVERIFY2(QString::fromStdString(tooMany.error).contains("has 12 triangles; at most 5"), tooMany.error.c_str());
+    MeshImportOptions small;
+    small.maxFileBytes = 16;
+    const auto tooBig = importMesh(path, small);
+    QVERIFY2(QString::fromStdString(tooBig.error).contains("bytes; at most 16 are read"), tooBig.error.c_str());
+    MeshImportOptions flat;
+    flat.scale = {1.0f, 0.0f, 1.0f};
+    QVERIFY2(QString::fromStdString(importMesh(path, flat).error).contains("scale must be finite and non-zero"),
+             importMesh(path, flat).error.c_str());
+    MeshImportOptions huge;
+    huge.scale = Vec3(1e6f);
+    QVERIFY2(QString::fromStdString(importMesh(path, huge).error).contains("beyond 1000000 m once scaled"),
+             importMesh(path, huge).error.c_str());
+}
+
+void TestMeshImport::fromMemoryChecksFormat() {
+    const auto mesh = importMeshFromMemory(kBoxObj, std::strlen(kBoxObj), "OBJ", "inline box");
+    QVERIFY2(mesh.ok(), mesh.error.c_str());
+    QCOMPARE(mesh.triangles.size(), std::size_t(12));
+    const QByteArray glbBytes = quadGlb();
+    QCOMPARE(importMeshFromMemory(glbBytes.data(), std::size_t(glbBytes.size()), "glb", "inline").triangles.size(), std::size_t(2));
+    const auto wrong = importMeshFromMemory(kBoxObj, std::strlen(kBoxObj), "3ds", "inline box");
+    QVERIFY2(wrong.error == "inline box: unsupported format \"3ds\" (use obj, stl, gltf or glb)", wrong.error.c_str());
+}
+
+void TestMeshImport::hullPointsOfAPart() {
+    const auto mesh = importMesh(write("box.obj", kBoxObj).toStdString());
+    const HullPoints points = hullPoints(mesh);
+    QVERIFY2(points.error.empty(), points.error.c_str());
+    QCOMPARE(points.points.size(), std::size_t(8));
+    const auto hull = ConvexHull::build(points.points);
+    QVERIFY(hull.hull);
+    QCOMPARE(hull.hull->faces().size(), std::size_t(6));
+    const auto flat = importMesh(write("square.stl", kSquareStl).toStdString());
+    QVERIFY(!hullPoints(flat).error.empty());
+}
+
+void TestMeshImport::triangleMeshFromFile() {
+    const auto built = importTriangleMesh(write("box.obj", kBoxObj).toStdString());
+    QVERIFY2(built.mesh, built.error.c_str());
+    QCOMPARE(built.mesh->triangleCount(), std::size_t(12));
+    // A closed box: every edge has a neighbour, and the 90-degree creases are active, the face
+    // diagonals not.
+    int active = 0;
+    for (std::uint32_t t = 0; t < 12; ++t)
+        for (int e = 0; e < 3; ++e) {
+            QVERIFY(built.mesh->neighbour(t, e) != TriangleMesh::kNoNeighbour);
+            active += isEdgeActive(built.mesh->triangle(t).flags, e);
+        }
+    QCOMPARE(active, 24);  // 12 box edges, seen from both sides
+    const auto missing = importTriangleMesh(dir.filePath("nothere.stl").toStdString());
+    QVERIFY(!missing.mesh && QString::fromStdString(missing.error).endsWith("nothere.stl: no such file"));
+}
+
+void TestMeshImport::shippedFiles() {
+    // tests/data/meshes/: the fuzzer's seeds, valid and hostile.
+    const QDir meshes(QStringLiteral(INTERPLAY_SOURCE_DIR "/tests/data/meshes"));
+    const std::pair<const char*, std::size_t> valid[] = {
+        {"box.obj", 12}, {"square.stl", 2}, {"tetrahedron_binary.stl", 4}, {"quad_embedded.gltf", 2}, {"quad.glb", 2}};
+    for (const auto& [name, triangles] : valid) {
+        const auto mesh = importMesh(meshes.filePath(name).toStdString());
+        QVERIFY2(mesh.ok(), mesh.error.c_str());
+        QCOMPARE(mesh.triangles.size(), triangles);
+    }
+    const QDir hostile(meshes.filePath("hostile"));
+    const QStringList files = hostile.entryList(QDir::Files);
+    QCOMPARE(files.size(), 6);
+    for (const QString& name : files) {
+        const auto mesh = importMesh(hostile.filePath(name).toStdString());
+        QVERIFY2(!mesh.ok() && QString::fromStdString(mesh.error).startsWith(hostile.filePath(name) + ": "),
+                 qPrintable(name + ": " + QString::fromStdString(mesh.error)));
+    }
+}
+
+QTEST_APPLESS_MAIN(TestMeshImport)
+#include "test_mesh_import.moc"
