@@ -344,14 +344,20 @@ void table63() {
     std::printf("|---|--:|--:|--:|--:|\n");
     row("integrateVelocities + integratePositions", fmt("%.2f", kThesisIntegrationMs) + " (integration)",
         [&](const StageResult& r) { return stage(r, Stage::IntegrateVelocities) + stage(r, Stage::IntegratePositions); });
-    row("broadPhase", fmt("%.2f", kThesisBroadPhaseMs) + " (possible-collision detection)",
-        [&](const StageResult& r) { return stage(r, Stage::BroadPhase); });
-    row("narrowPhase", fmt("%.2f", kThesisContactPointsMs) + " (contact point generation)",
-        [&](const StageResult& r) { return stage(r, Stage::NarrowPhase); });
-    row("solveConstraints", fmt("%.2f", kThesisResolutionMs) + " (contact resolution)",
-        [&](const StageResult& r) { return stage(r, Stage::SolveConstraints); });
-    row("continuousCollision", "— (none)", [&](const StageResult& r) { return stage(r, Stage::ContinuousCollision); });
-    row("sleep", "— (none)", [&](const StageResult& r) { return stage(r, Stage::Sleep); });
+    row("pairs", fmt("%.2f", kThesisBroadPhaseMs) + " (possible-collision detection)",
+        [&](const StageResult& r) { return stage(r, Stage::Pairs); });
+    row("collide", fmt("%.2f", kThesisContactPointsMs) + " (contact point generation)",
+        [&](const StageResult& r) { return stage(r, Stage::Collide); });
+    row("prepare + warmStart + solve + restitution + relax + storeImpulses",
+        fmt("%.2f", kThesisResolutionMs) + " (contact resolution)", [&](const StageResult& r) {
+            double sum = 0.0;
+            for (Stage s : {Stage::Prepare, Stage::WarmStart, Stage::Solve, Stage::Restitution, Stage::Relax,
+                            Stage::StoreImpulses})
+                sum += stage(r, s);
+            return sum;
+        });
+    row("continuous", "— (none)", [&](const StageResult& r) { return stage(r, Stage::Continuous); });
+    row("islands + sleep", "— (none)", [&](const StageResult& r) { return stage(r, Stage::Islands) + stage(r, Stage::Sleep); });
     row("**whole step** (StepProfile::totalMs)",
         fmt("%.2f", kThesisIntegrationMs + kThesisBroadPhaseMs + kThesisContactPointsMs + kThesisResolutionMs) +
             " (sum of the four physics rows)",

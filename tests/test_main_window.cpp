@@ -1228,6 +1228,13 @@ void TestMainWindow::profilerShowsTheLatestStep() {
     QVERIFY2(profiler->figure("msPerStep").endsWith(" ms"), qPrintable(profiler->figure("msPerStep")));
     QVERIFY(profiler->figure("awakeBodies").contains("of 5 dynamic"));
     QCOMPARE(m_window->simulation()->history().size(), std::size_t(5));
+    // The skipped stages are named as the stage table names them, and are the step's.
+    QStringList expected;
+    const simcore::StepProfile& profile = m_window->simulation()->world()->lastStepProfile();
+    for (const simcore::StageInfo& info : simcore::kStages)
+        if (profile.skipped[static_cast<std::size_t>(info.stage)] != simcore::StageSkip::Ran)
+            expected << QString::fromLatin1(info.name.data(), static_cast<qsizetype>(info.name.size()));
+    QCOMPARE(profiler->figure("skippedStages"), expected.isEmpty() ? QString("none") : expected.join(", "));
 }
 
 void TestMainWindow::everyDemoSceneRenders_data() {

@@ -30,6 +30,7 @@ ProfilerPanel::ProfilerPanel(SimulationController* simulation, QWidget* parent)
     addFigure(QStringLiteral("potentialEnergy"), tr("Potential energy"));
     addFigure(QStringLiteral("energyChange"), tr("Energy change"));
     addFigure(QStringLiteral("maxPenetration"), tr("Max penetration"));
+    addFigure(QStringLiteral("skippedStages"), tr("Stages skipped"))->setWordWrap(true);
 
     connect(simulation, &SimulationController::stepped, this, &ProfilerPanel::refresh);
     connect(simulation, &SimulationController::worldRebuilt, this, [this] {
@@ -70,6 +71,19 @@ void ProfilerPanel::refresh() {
     set("potentialEnergy", tr("%1 J").arg(potential, 0, 'f', 3));
     set("energyChange", tr("%1 J").arg(kinetic + potential - m_initialEnergy, 0, 'f', 3));
     set("maxPenetration", tr("%1 mm").arg(profile.maxPenetration * 1000.0f, 0, 'f', 2));
+
+    // The names in the row, each with its reason in the tooltip (a reason is a sentence).
+    QStringList skipped, reasons;
+    for (const simcore::StageInfo& info : simcore::kStages) {
+        const simcore::StageSkip skip = profile.skipped[static_cast<std::size_t>(info.stage)];
+        if (skip == simcore::StageSkip::Ran) continue;
+        const std::string_view reason = simcore::stageSkipReason(skip);
+        skipped << QString::fromLatin1(info.name.data(), static_cast<qsizetype>(info.name.size()));
+        reasons << skipped.back() + QStringLiteral(": ") +
+                       QString::fromLatin1(reason.data(), static_cast<qsizetype>(reason.size()));
+    }
+    set("skippedStages", world->stepCount() == 0 ? tr("–") : skipped.isEmpty() ? tr("none") : skipped.join(QStringLiteral(", ")));
+    if (auto* label = m_figures->findChild<QLabel*>(QStringLiteral("skippedStages"))) label->setToolTip(reasons.join('\n'));
 }
 
 }  // namespace interplay

@@ -1,7 +1,8 @@
 #pragma once
 // The Profiler dock: per-stage time per step over time (ProfilerPlot), and the latest step's
 // counters and error measures: bodies awake, pairs, contacts, islands, kinetic and potential
-// energy, the energy's change since the world was built, and the deepest penetration.
+// energy, the energy's change since the world was built, the deepest penetration, and which
+// stages the step skipped (why, in the tooltip).
 
 #include <QWidget>
 
@@ -17,7 +18,8 @@ class ProfilerPanel : public QWidget {
 public:
     explicit ProfilerPanel(SimulationController* simulation, QWidget* parent = nullptr);
 
-    // The text of a figure by key ("msPerStep", "awakeBodies", "kineticEnergy", ...), for tests.
+    // The text of a figure by key ("msPerStep", "awakeBodies", "kineticEnergy", "skippedStages",
+    // ...), for tests.
     QString figure(const QString& key) const;
 
 private:

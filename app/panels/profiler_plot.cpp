@@ -14,17 +14,24 @@
 namespace interplay {
 namespace {
 
-// One colour per simcore::Stage, in stage order (qualitative, distinguishable when stacked).
+// One colour per stage of simcore::kStages, in its order (qualitative, distinguishable when
+// stacked; neighbours differ in hue).
 constexpr std::array<QRgb, simcore::kStageCount> kStageColors{
+    0xF58518,  // pairs
+    0xE45756,  // collide
+    0xB279A2,  // islands
+    0x9D755D,  // prepare
     0x4C78A8,  // integrate velocities
-    0xF58518,  // broad phase
-    0xE45756,  // narrow phase
-    0x72B7B2,  // solve constraints
+    0xFF9DA6,  // warm start
+    0x72B7B2,  // solve
     0x54A24B,  // integrate positions
-    0xEECA3B,  // continuous collision
-    0xB279A2,  // sleep
+    0xEECA3B,  // restitution
+    0x88D27A,  // relax
+    0xBAB0AC,  // store impulses
+    0x2F4B7C,  // continuous
+    0xD67195,  // sleep
 };
-constexpr int kLegendWidth = 150;
+constexpr int kLegendWidth = 170;  // room for "integrate velocities  0.000"
 constexpr int kAxisWidth = 48;
 constexpr int kMargin = 6;
 
@@ -111,18 +118,20 @@ void ProfilerPlot::paintEvent(QPaintEvent*) {
         painter.drawText(plot, Qt::AlignCenter, tr("Play or step to measure"));
     }
 
-    // Legend: stage colour, name and the latest step's time.
+    // Legend: stage colour, name and the latest step's time; rows shrink to fit a low dock.
     const double legendX = plot.right() + 10;
+    const double rowHeight = std::clamp((height() - 2.0 * kMargin) / simcore::kStageCount, 10.0, 16.0);
     for (int stage = 0; stage < simcore::kStageCount; ++stage) {
-        const double y = kMargin + stage * 16.0;
+        const double y = kMargin + stage * rowHeight;
         painter.setPen(Qt::NoPen);
         painter.setBrush(QColor::fromRgb(kStageColors[static_cast<std::size_t>(stage)]));
-        painter.drawRect(QRectF(legendX, y + 3, 10, 10));
+        painter.drawRect(QRectF(legendX, y + (rowHeight - 8.0) / 2.0, 8, 8));
         painter.setPen(palette().text().color());
         const double latest = history.empty() ? 0.0 : history.back().profile.stageMs[static_cast<std::size_t>(stage)];
-        painter.drawText(QRectF(legendX + 14, y, kLegendWidth - 16, 16), Qt::AlignLeft | Qt::AlignVCenter,
+        const std::string_view name = simcore::kStages[static_cast<std::size_t>(stage)].name;
+        painter.drawText(QRectF(legendX + 14, y, kLegendWidth - 16, rowHeight), Qt::AlignLeft | Qt::AlignVCenter,
                          QStringLiteral("%1  %2")
-                             .arg(QString::fromLatin1(simcore::stageName(static_cast<simcore::Stage>(stage))))
+                             .arg(QString::fromLatin1(name.data(), static_cast<qsizetype>(name.size())))
                              .arg(latest, 0, 'f', 3));
     }
 }

@@ -140,11 +140,7 @@ int run(const runner::RunnerOptions& options) {
         world.step();
         summary.wallMs += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         ++summary.steps;
-        const simcore::StepProfile& profile = world.lastStepProfile();
-        for (int stage = 0; stage < simcore::kStageCount; ++stage) summary.stageMs[stage] += profile.stageMs[stage];
-        summary.maxPenetration = std::max(summary.maxPenetration, profile.maxPenetration);
-        summary.droppedPairs += profile.counters.droppedPairs;
-        summary.boundedVelocities += profile.counters.boundedVelocities;
+        runner::addStepProfile(summary, world.lastStepProfile());
         if (world.jointCount() > 0) {
             const simcore::JointError jointError = world.worstJointError();
             summary.maxJointError.position = std::max(summary.maxJointError.position, jointError.position);
@@ -191,6 +187,10 @@ int main(int argc, char** argv) {
     const runner::ParseResult parsed = runner::parseArguments({argv + 1, argv + argc});
     if (parsed.options.help) {
         std::cout << runner::usageText();
+        return kSuccess;
+    }
+    if (parsed.options.listStages) {
+        std::cout << runner::stageTable();
         return kSuccess;
     }
     if (!parsed.error.empty()) {

@@ -1,5 +1,7 @@
 #include "report.h"
 
+#include <algorithm>
+
 namespace runner {
 
 namespace {
@@ -8,6 +10,18 @@ nlohmann::ordered_json toJson(const simcore::Vec3& v) { return {v.x, v.y, v.z}; 
 nlohmann::ordered_json toJson(const simcore::Quat& q) { return {q.w, q.x, q.y, q.z}; }
 
 }  // namespace
+
+void addStepProfile(RunSummary& summary, const simcore::StepProfile& profile) {
+    for (std::size_t s = 0; s < summary.stageMs.size(); ++s) {
+        summary.stageMs[s] += profile.stageMs[s];
+        if (profile.skipped[s] == simcore::StageSkip::Ran) continue;
+        ++summary.stageSkips[s];
+        summary.lastSkip[s] = profile.skipped[s];
+    }
+    summary.maxPenetration = std::max(summary.maxPenetration, profile.maxPenetration);
+    summary.droppedPairs += profile.counters.droppedPairs;
+    summary.boundedVelocities += profile.counters.boundedVelocities;
+}
 
 nlohmann::ordered_json makeReport(const simcore::World& world, const RunSummary& summary) {
     using namespace simcore;
@@ -21,9 +35,16 @@ nlohmann::ordered_json makeReport(const simcore::World& world, const RunSummary&
     report["wallMs"] = summary.wallMs;
     report["msPerStep"] = summary.wallMs * perStep;
 
-    nlohmann::ordered_json stages = nlohmann::ordered_json::object();  // mean ms per step of each stage
-    for (int s = 0; s < kStageCount; ++s)
-        stages[std::string(stageName(static_cast<Stage>(s)))] = summary.stageMs[s] * perStep;
+    // In order of execution; a stage skipped in some step says why (the latest step's reason).
+    nlohmann::ordered_json stages = nlohmann::ordered_json::array();
+    for (const StageInfo& info : kStages) {
+        const auto s = static_cast<std::size_t>(info.stage);
+        nlohmann::ordered_json stage = {{"stage", info.key},
+                                        {"msPerStep", summary.stageMs[s] * perStep},
+                                        {"stepsRun", summary.steps - summary.stageSkips[s]}};
+        if (summary.stageSkips[s] > 0) stage["skipped"] = stageSkipReason(summary.lastSkip[s]);
+        stages.push_back(stage);
+    }
     report["stages"] = stages;
 
     nlohmann::ordered_json effects = nlohmann::ordered_json::object();  // did the stage run in any step?
@@ -68,6 +89,16 @@ nlohmann::ordered_json makeReport(const simcore::World& world, const RunSummary&
     }
     report["bodies"] = bodies;
     return report;
+}
+
+std::string stageTable() {
+    std::string table = "| # | stage | runs | what it does | skipped when |\n|---|---|---|---|---|\n";
+    for (const simcore::StageInfo& info : simcore::kStages) {
+        table += "| " + std::to_string(static_cast<int>(info.stage) + 1) + " | `" + std::string(info.key) + "` | " +
+                 (info.perSubstep ? "per substep" : "per step") + " | " + std::string(info.doc) + " | " +
+                 std::string(info.skippedWhen) + " |\n";
+    }
+    return table;
 }
 
 }  // namespace runner

@@ -47,6 +47,7 @@ std::string usageText() {
            "                    [--iterations V] [--threads N] [--preset NAME] [--set key.path=value]...\n"
            "                    [--force NAME=[fx,fy,fz]]...\n"
            "                    [--trace FILE.csv] [--out FILE.json] [--save FILE.json]\n"
+           "       interplay-run --list-stages\n"
            "Runs a scene without a window and prints a JSON report on stdout.\n"
            "  --steps N         number of steps (default: 1 second of simulated time)\n"
            "  --seconds T       simulated time; steps = ceil(T / dt)\n"
@@ -62,6 +63,7 @@ std::string usageText() {
            "  --trace FILE.csv  per-step state of every body\n"
            "  --out FILE.json   also write the report to FILE.json\n"
            "  --save FILE.json  write the scene as run (v1) before stepping; --steps 0 converts\n"
+           "  --list-stages     print the step's stages in order of execution (a Markdown table) and exit\n"
            "Exit codes: 0 success, 2 bad arguments, 3 unreadable scene, 4 non-finite state.\n"
            "Settings (--set key=value; a vector as [x,y,z] or key.0=x, a section as a JSON object):\n"
            "  preset  fast, balanced or accurate\n";
@@ -92,6 +94,10 @@ ParseResult parseArguments(const std::vector<std::string>& arguments) {
         const std::string& arg = arguments[i];
         if (arg == "--help" || arg == "-h") {
             options.help = true;
+            return result;
+        }
+        if (arg == "--list-stages") {
+            options.listStages = true;
             return result;
         }
         if (arg.rfind("--", 0) != 0) {

@@ -33,6 +33,7 @@ struct RunnerOptions {
     std::string outPath;                     // --out FILE.json
     std::string savePath;                    // --save FILE.json
     bool help = false;
+    bool listStages = false;  // --list-stages: print the stage table and exit
 };
 
 struct ParseResult {

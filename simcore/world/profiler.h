@@ -2,26 +2,13 @@
 // Per-stage timings and counters of the step: part of the engine's API, read by the runner's
 // report and the editor's profiler panel.
 
+#include "simcore/world/stages.h"
+
 #include <array>
 #include <chrono>
 #include <cstdint>
-#include <string_view>
 
 namespace simcore {
-
-// The stages of World::step, in order of execution.
-enum class Stage : std::uint8_t {
-    IntegrateVelocities,  // gravity, damping, gyroscopic torque
-    BroadPhase,
-    NarrowPhase,
-    SolveConstraints,     // contacts, friction, restitution, joints
-    IntegratePositions,
-    ContinuousCollision,
-    Sleep,
-    Count
-};
-constexpr int kStageCount = static_cast<int>(Stage::Count);
-std::string_view stageName(Stage stage);  // camelCase, as in the runner's report
 
 struct StepCounters {
     std::uint32_t bodies = 0;
@@ -38,7 +25,10 @@ struct StepCounters {
 };
 
 struct StepProfile {
-    std::array<double, kStageCount> stageMs{};  // wall time per stage (ms)
+    // Wall time per stage (ms), in the order of kStages; a per-substep stage's is summed over the
+    // substeps. A skipped stage's is zero, or the time it took to find it had nothing to do.
+    std::array<double, kStageCount> stageMs{};
+    std::array<StageSkip, kStageCount> skipped{};  // why each stage did not run (Ran when it did)
     double totalMs = 0.0;                       // wall time of the whole step (ms)
     float maxPenetration = 0.0f;                // deepest contact overlap when the step began (m)
     StepCounters counters;

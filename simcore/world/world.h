@@ -204,6 +204,28 @@ private:
     };
     Activity scanActivity() const;
     bool needs(Effect effect, const Activity& activity) const;
+
+    // What one step runs, decided before its first stage (the solver's stages once the
+    // constraints are prepared); the stages it leaves out get their reason in StepProfile::skipped.
+    struct StepPlan {
+        Activity activity;
+        bool gravity = false, damping = false, gyroscopic = false, contacts = false, joints = false;
+        bool sleeping = false, continuous = false;
+        bool solveContacts = false, solveJoints = false, relaxContacts = false, bounce = false;
+        float substepDt = 0.0f;  // s
+        VelocityIntegration velocity;
+    };
+    using StageSkips = std::array<StageSkip, kStageCount>;
+    StepPlan planStep(StageSkips& skipped) const;
+    void planSolve(StepPlan& plan, StageSkips& skipped) const;  // after Stage::Prepare
+    // The stages of step() that are more than one call, in order.
+    void prepareConstraints(const StepPlan& plan);
+    void warmStart(const StepPlan& plan);
+    void solveVelocities(const StepPlan& plan);
+    void relaxConstraints(const StepPlan& plan);
+    void storeImpulses(const StepPlan& plan, StepCounters& counters);
+    void sleepRestingIslands(const StepPlan& plan);
+    void finishStep(const StepPlan& plan, StepProfile& profile);  // effects counted, forces cleared, counters
     std::size_t updateBroadPhase(float dt);  // returns the pairs refused by the contact cap
     void updateContacts();
     void recordSweepStarts();
