@@ -67,7 +67,8 @@ public:
     void cutSelection();
     // Adds the clipboard's bodies and joints (renamed where their names are taken) at the paste
     // point, else beside where they were copied from; one undo entry, and they become the
-    // selection. Text that is no scene changes nothing and is rejected with the loader's reason.
+    // selection. The fragment's settings are not applied: a paste adds bodies and joints only.
+    // Text that is no scene changes nothing and is rejected with the loader's reason.
     void paste();
     void selectAll();
     void selectNone();

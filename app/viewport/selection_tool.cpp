@@ -232,7 +232,8 @@ void SelectionTool::boxSelect(const QRect& box) {
         if (pixel.z > 1.0f || pixel.z < 0.0f) continue;  // behind the eye or beyond the far plane
         if (box.contains(QPoint(static_cast<int>(std::floor(pixel.x)), static_cast<int>(std::floor(pixel.y))))) inBox << i;
     }
-    // As a click: plain replaces the selection, Shift adds, Ctrl toggles.
+    // Plain replaces the selection (dropping selected joints, as a click on nothing does), Shift
+    // adds, Ctrl toggles (a box may hold selected and unselected bodies, so the two differ).
     QList<int> bodies = m_document->selectedBodies();
     QList<int> joints = m_document->selectedJoints();
     if (m_pressModifiers & Qt::ControlModifier) {
