@@ -21,6 +21,7 @@
 #include <QApplication>
 #include <QCloseEvent>
 #include <QComboBox>
+#include <QCursor>
 #include <QDir>
 #include <QDockWidget>
 #include <QFileDialog>
@@ -108,6 +109,12 @@ MainWindow::MainWindow(QWidget* parent)
       m_sceneTreeModel(new SceneTreeModel(m_document, this)) {
     m_files->prompts() = dialogPrompts(this);
     m_sceneActions->setPlacement([this](float bodyHalfHeight) { return m_viewport->placementPoint(bodyHalfHeight); });
+    // Paste puts bodies where the cursor points while it is over the view.
+    m_sceneActions->setPastePoint([this]() -> std::optional<simcore::Vec3> {
+        const QPoint pixel = m_viewport->mapFromGlobal(QCursor::pos());
+        if (!m_viewport->rect().contains(pixel)) return std::nullopt;
+        return m_viewport->surfacePointAt(pixel);
+    });
     setCentralWidget(m_viewport);
     m_viewport->setSimulation(m_simulation);
     m_viewport->setDocument(m_document);
@@ -384,9 +391,15 @@ void MainWindow::createMenusAndToolBars() {
     edit->addAction(action(QStringLiteral("undo")));
     edit->addAction(action(QStringLiteral("redo")));
     edit->addSeparator();
+    edit->addAction(m_sceneActions->cutAction());
+    edit->addAction(m_sceneActions->copyAction());
+    edit->addAction(m_sceneActions->pasteAction());
     edit->addAction(m_sceneActions->duplicateAction());
     edit->addAction(m_sceneActions->deleteAction());
+    edit->addSeparator();
     edit->addAction(m_sceneActions->selectAllAction());
+    edit->addAction(m_sceneActions->selectNoneAction());
+    edit->addAction(m_sceneActions->invertSelectionAction());
     edit->addSeparator();
     edit->addAction(action(QStringLiteral("applyPose")));
 

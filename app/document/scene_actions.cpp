@@ -1,12 +1,15 @@
 #include "app/document/scene_actions.h"
 
 #include "app/document/body_templates.h"
+#include "app/document/scene_clipboard.h"
 #include "app/document/scene_document.h"
 #include "app/document/undo_commands.h"
 
 #include <QAction>
+#include <QClipboard>
+#include <QGuiApplication>
 #include <QKeySequence>
-#include <QRegularExpression>
+#include <QMimeData>
 #include <QUndoStack>
 
 #include <algorithm>
@@ -69,6 +72,21 @@ SceneActions::SceneActions(SceneDocument* document, QObject* parent)
     m_selectAll = createAction(this, QStringLiteral("selectAll"), tr("Select &All"), QKeySequence::SelectAll,
                                tr("Select every body"));
     connect(m_selectAll, &QAction::triggered, this, &SceneActions::selectAll);
+    m_selectNone = createAction(this, QStringLiteral("selectNone"), tr("Select &None"), Qt::CTRL | Qt::SHIFT | Qt::Key_A,
+                                tr("Clear the selection"));
+    connect(m_selectNone, &QAction::triggered, this, &SceneActions::selectNone);
+    m_invertSelection = createAction(this, QStringLiteral("invertSelection"), tr("&Invert Selection"),
+                                     Qt::CTRL | Qt::Key_I, tr("Select the bodies that are not selected, and only those"));
+    connect(m_invertSelection, &QAction::triggered, this, &SceneActions::invertSelection);
+    m_copy = createAction(this, QStringLiteral("copy"), tr("&Copy"), QKeySequence::Copy,
+                          tr("Copy the selected bodies and the joints among them to the clipboard"));
+    connect(m_copy, &QAction::triggered, this, &SceneActions::copySelection);
+    m_cut = createAction(this, QStringLiteral("cut"), tr("Cu&t"), QKeySequence::Cut,
+                         tr("Copy the selected bodies to the clipboard and delete them with their joints"));
+    connect(m_cut, &QAction::triggered, this, &SceneActions::cutSelection);
+    m_paste = createAction(this, QStringLiteral("paste"), tr("&Paste"), QKeySequence::Paste,
+                           tr("Add the clipboard's bodies and joints at the cursor, or beside where they were copied"));
+    connect(m_paste, &QAction::triggered, this, &SceneActions::paste);
 
     connect(m_document, &SceneDocument::selectionChanged, this, &SceneActions::updateJointActions);
     connect(m_document, &SceneDocument::bodyChanged, this, &SceneActions::updateJointActions);
@@ -132,23 +150,42 @@ void SceneActions::updateJointActions() {
 void SceneActions::duplicateSelection() {
     const QList<int> selection = m_document->selectedBodies();
     if (selection.isEmpty()) return;
-    static const QRegularExpression trailingNumber(QStringLiteral("\\s*\\d+$"));
-    std::vector<simcore::SceneBody> copies;
-    QList<int> indices;
-    QStringList newNames;
-    for (int index : selection) {
-        simcore::SceneBody copy = m_document->body(index);
-        // "Box 3" copies to the next free "Box N"; the copy sits beside the original, not in it.
-        const QString base = QString::fromStdString(copy.body.name).remove(trailingNumber);
-        newNames << m_document->uniqueBodyName(base.isEmpty() ? tr("Body") : base, newNames);
-        copy.body.name = newNames.last().toStdString();
-        const simcore::Aabb bounds = simcore::worldBounds(copy.body.shape, {copy.body.position, copy.body.orientation});
-        copy.body.position.x += bounds.max.x - bounds.min.x + 0.1f;
-        indices << m_document->bodyCount() + static_cast<int>(copies.size());
-        copies.push_back(std::move(copy));
+    simcore::Scene fragment = sceneFragment(m_document->scene(), selection);
+    giveUniqueNames(fragment, *m_document);
+    translateFragment(fragment, offsetBeside(fragment));
+    m_document->undoStack()->push(new AddFragment(
+        m_document, tr("Duplicate %1").arg(bodiesLabel(*m_document, selection)), std::move(fragment)));
+}
+
+void SceneActions::copySelection() {
+    const QList<int>& selection = m_document->selectedBodies();
+    if (selection.isEmpty()) return;
+    QGuiApplication::clipboard()->setMimeData(fragmentMimeData(sceneFragment(m_document->scene(), selection)));
+}
+
+void SceneActions::cutSelection() {
+    const QList<int> selection = m_document->selectedBodies();
+    if (selection.isEmpty()) return;
+    copySelection();
+    auto* remove = new RemoveBodies(m_document, selection);
+    remove->setText(tr("Cut %1").arg(bodiesLabel(*m_document, selection)));
+    m_document->undoStack()->push(remove);
+}
+
+void SceneActions::paste() {
+    const QMimeData* data = QGuiApplication::clipboard()->mimeData();
+    ParsedFragment parsed = parseFragment(data ? fragmentTextOf(*data) : QByteArray());
+    if (!parsed.fragment) {
+        emit rejected(tr("Nothing pasted: %1").arg(parsed.error));
+        return;
     }
-    m_document->undoStack()->push(new AddBodies(m_document, tr("Duplicate %1").arg(bodiesLabel(*m_document, selection)),
-                                                indices, std::move(copies)));
+    simcore::Scene& fragment = *parsed.fragment;
+    giveUniqueNames(fragment, *m_document);
+    const std::optional<simcore::Vec3> point = m_pastePoint ? m_pastePoint() : std::nullopt;
+    translateFragment(fragment, point ? offsetOnto(fragment, *point) : offsetBeside(fragment));
+    const QString what = fragment.bodies.size() == 1 ? QString::fromStdString(fragment.bodies.front().body.name)
+                                                     : tr("%n Bodies", nullptr, int(fragment.bodies.size()));
+    m_document->undoStack()->push(new AddFragment(m_document, tr("Paste %1").arg(what), std::move(fragment)));
 }
 
 void SceneActions::deleteSelection() {
@@ -161,6 +198,18 @@ void SceneActions::selectAll() {
     QList<int> all;
     for (int i = 0; i < m_document->bodyCount(); ++i) all << i;
     m_document->setSelectedBodies(all);
+}
+
+void SceneActions::selectNone() {
+    m_document->setSelection({}, {});
+}
+
+void SceneActions::invertSelection() {
+    QList<int> unselected;
+    for (int i = 0; i < m_document->bodyCount(); ++i) {
+        if (!m_document->selectedBodies().contains(i)) unselected << i;
+    }
+    m_document->setSelection(unselected, m_document->selectedJoints());
 }
 
 }  // namespace interplay

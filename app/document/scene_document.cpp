@@ -151,13 +151,14 @@ QString SceneDocument::uniqueBodyName(const QString& base, const QStringList& al
     }
 }
 
-QString SceneDocument::uniqueJointName(const QString& base) const {
+QString SceneDocument::uniqueJointName(const QString& base, const QStringList& alsoTaken) const {
     for (int n = 1;; ++n) {
         const QString candidate = QStringLiteral("%1 %2").arg(base).arg(n);
         const std::string name = candidate.toStdString();
-        if (std::none_of(m_scene.joints.begin(), m_scene.joints.end(),
-                         [&](const simcore::SceneJoint& j) { return j.joint.name == name; }))
-            return candidate;
+        const bool used = alsoTaken.contains(candidate) ||
+                          std::any_of(m_scene.joints.begin(), m_scene.joints.end(),
+                                      [&](const simcore::SceneJoint& j) { return j.joint.name == name; });
+        if (!used) return candidate;
     }
 }
 

@@ -102,7 +102,7 @@ public:
     // names about to be added).
     QString uniqueBodyName(const QString& base, const QStringList& alsoTaken = {}) const;
     // "Joint 2": as uniqueBodyName, among the joints.
-    QString uniqueJointName(const QString& base) const;
+    QString uniqueJointName(const QString& base, const QStringList& alsoTaken = {}) const;
     // Why the engine would refuse `joint` between this scene's bodies, or an empty string.
     QString jointProblem(const simcore::SceneJoint& joint) const;
     // Why body `index` cannot be called `name`, or an empty string: joints name their bodies in

@@ -44,8 +44,8 @@ bool sameSceneBody(const simcore::SceneBody& a, const simcore::SceneBody& b) {
 // ---- AddBodies ----------------------------------------------------------------------------------
 
 AddBodies::AddBodies(SceneDocument* document, const QString& text, QList<int> indices,
-                     std::vector<simcore::SceneBody> bodies)
-    : QUndoCommand(text), m_document(document), m_indices(std::move(indices)), m_bodies(std::move(bodies)) {
+                     std::vector<simcore::SceneBody> bodies, QUndoCommand* parent)
+    : QUndoCommand(text, parent), m_document(document), m_indices(std::move(indices)), m_bodies(std::move(bodies)) {
     Q_ASSERT(static_cast<std::size_t>(m_indices.size()) == m_bodies.size());
     Q_ASSERT(std::is_sorted(m_indices.begin(), m_indices.end()));
 }
@@ -100,8 +100,9 @@ void RemoveBodies::undo() {
 
 // ---- AddJoint -----------------------------------------------------------------------------------
 
-AddJoint::AddJoint(SceneDocument* document, const QString& text, int index, simcore::SceneJoint joint)
-    : QUndoCommand(text), m_document(document), m_index(index), m_joint(std::move(joint)) {}
+AddJoint::AddJoint(SceneDocument* document, const QString& text, int index, simcore::SceneJoint joint,
+                   QUndoCommand* parent)
+    : QUndoCommand(text, parent), m_document(document), m_index(index), m_joint(std::move(joint)) {}
 
 void AddJoint::redo() {
     m_document->insertJoint(m_index, m_joint);
@@ -110,6 +111,26 @@ void AddJoint::redo() {
 
 void AddJoint::undo() {
     m_document->takeJoint(m_index);
+}
+
+// ---- AddFragment --------------------------------------------------------------------------------
+
+AddFragment::AddFragment(SceneDocument* document, const QString& text, simcore::Scene fragment)
+    : QUndoCommand(text), m_document(document) {
+    const std::size_t firstBody = static_cast<std::size_t>(document->bodyCount());
+    for (std::size_t i = 0; i < fragment.bodies.size(); ++i) m_bodyIndices << static_cast<int>(firstBody + i);
+    new AddBodies(document, text, m_bodyIndices, std::move(fragment.bodies), this);
+    int jointIndex = document->jointCount();
+    for (simcore::SceneJoint& joint : fragment.joints) {
+        joint.bodyA += firstBody;
+        if (joint.bodyB) *joint.bodyB += firstBody;
+        new AddJoint(document, text, jointIndex++, std::move(joint), this);
+    }
+}
+
+void AddFragment::redo() {
+    QUndoCommand::redo();  // the bodies, then their joints (each joint selects itself)
+    m_document->setSelectedBodies(m_bodyIndices);
 }
 
 // ---- ReorderBody --------------------------------------------------------------------------------

@@ -37,7 +37,8 @@ bool sameSceneJoint(const simcore::SceneJoint& a, const simcore::SceneJoint& b);
 // Add, Duplicate and Paste-like edits; the new bodies become the selection.
 class AddBodies : public QUndoCommand {
 public:
-    AddBodies(SceneDocument* document, const QString& text, QList<int> indices, std::vector<simcore::SceneBody> bodies);
+    AddBodies(SceneDocument* document, const QString& text, QList<int> indices, std::vector<simcore::SceneBody> bodies,
+              QUndoCommand* parent = nullptr);
     void redo() override;
     void undo() override;
 
@@ -67,7 +68,8 @@ private:
 // Adds one joint at `index` ("Add Hinge Joint"); it becomes the selection.
 class AddJoint : public QUndoCommand {
 public:
-    AddJoint(SceneDocument* document, const QString& text, int index, simcore::SceneJoint joint);
+    AddJoint(SceneDocument* document, const QString& text, int index, simcore::SceneJoint joint,
+             QUndoCommand* parent = nullptr);
     void redo() override;
     void undo() override;
 
@@ -75,6 +77,19 @@ private:
     SceneDocument* m_document;
     int m_index;
     simcore::SceneJoint m_joint;
+};
+
+// Adds a scene fragment's bodies after the document's and its joints after the document's joints
+// (Paste, Duplicate): one AddBodies and one AddJoint per joint as children, so one history entry;
+// the added bodies become the selection.
+class AddFragment : public QUndoCommand {
+public:
+    AddFragment(SceneDocument* document, const QString& text, simcore::Scene fragment);
+    void redo() override;
+
+private:
+    SceneDocument* m_document;
+    QList<int> m_bodyIndices;
 };
 
 // Moves one body in the scene's order (drag to reorder in the scene tree).

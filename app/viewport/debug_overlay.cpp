@@ -3,9 +3,27 @@
 #include "app/viewport/debug_draw_options.h"
 #include "app/viewport/look.h"
 
+#include <QColor>
+#include <QPainter>
+#include <QPen>
+#include <QRect>
+
 namespace interplay {
 
 using look::srgb;
+
+void paintRubberBand(QPainter& painter, const QRect& box) {
+    constexpr int kFillAlpha = 40;  // of 255: the bodies inside stay visible
+    QColor fill = QColor::fromRgb(look::kSelectionColor);
+    fill.setAlpha(kFillAlpha);
+    painter.fillRect(box, fill);
+    painter.setBrush(Qt::NoBrush);
+    painter.setPen(QPen(QColor::fromRgb(look::kJointColor), 1.0));
+    painter.drawRect(box);
+    QPen dashes(Qt::white, 1.0, Qt::DashLine);
+    painter.setPen(dashes);
+    painter.drawRect(box);
+}
 
 SceneJoints::SceneJoints(const std::vector<simcore::JointId>& jointIds)
     : m_jointIds(jointIds), m_bySceneIndex(jointIds.size()) {

@@ -2,13 +2,17 @@
 // The debug overlay: a DebugDraw that turns what World::draw emits into coloured lines over the
 // bodies: bounds, contact points and normals (as the DebugDrawOptions ask), the joints (always:
 // a rod or a hinge pin, a small cross at each live anchor; selected joints in the selection colour
-// with their anchors marked large and their axis drawn) and the grab spring.
+// with their anchors marked large and their axis drawn) and the grab spring. And, painted over
+// the frame in widget pixels, the box-select rectangle.
 
 #include "app/viewport/renderer.h"
 
 #include "simcore/world/debug_draw.h"
 
 #include <QList>
+
+class QPainter;
+class QRect;
 
 #include <optional>
 #include <utility>
@@ -34,6 +38,10 @@ private:
     std::vector<int> m_sceneIndexOfSlot;  // by JointId::index, -1 where no scene joint
     std::vector<std::optional<simcore::DebugJoint>> m_bySceneIndex;
 };
+
+// The box-select rectangle: a faint selection-coloured fill, a dark edge and a light dashed line on
+// it, so the box reads over a light sky and a dark body alike.
+void paintRubberBand(QPainter& painter, const QRect& box);
 
 class DebugOverlay : public simcore::DebugDraw {
 public:

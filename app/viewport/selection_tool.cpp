@@ -49,7 +49,8 @@ bool SelectionTool::mousePress(QMouseEvent* event) {
         m_flyClock.start();
         m_flyTimer.start();
     } else if (event->button() == Qt::MiddleButton) {
-        m_gesture = Gesture::Pan;
+        // As in Blender and Godot: the left button selects, the middle one turns the view.
+        m_gesture = (event->modifiers() & Qt::ShiftModifier) ? Gesture::Pan : Gesture::Orbit;
     } else {
         // Joint marks are drawn over the bodies, so a joint near the cursor takes the click (it is
         // selected on release, and a drag from it moves the camera, never a body), unless its point
@@ -72,8 +73,10 @@ bool SelectionTool::mousePress(QMouseEvent* event) {
         m_pressedBodyWasSelected = m_document && sceneIndex >= 0 && m_document->selectedBodies() == QList<int>{sceneIndex};
         if (hit && (sceneIndex >= 0 || m_simulation->isPlaying())) {
             pressOnBody(event, *hit, sceneIndex);
+        } else if (!hit && m_clickedJoint < 0 && m_document) {
+            m_gesture = Gesture::BoxSelect;  // a release without a drag is a click on nothing
         } else {
-            m_gesture = (event->modifiers() & Qt::ShiftModifier) ? Gesture::Pan : Gesture::Orbit;
+            m_gesture = Gesture::Orbit;
         }
     }
     return true;
@@ -155,6 +158,7 @@ bool SelectionTool::mouseMove(QMouseEvent* event) {
     case Gesture::Fly: camera.lookAround(dx, dy); break;
     case Gesture::MoveBodies:
     case Gesture::RotateBodies: dragBodies(event->position()); return true;
+    case Gesture::BoxSelect: emit repaintNeeded(); return true;
     case Gesture::Grab: {
         const auto [origin, direction] = m_viewport.rayThrough(event->position());
         m_simulation->moveGrab(origin + direction * m_grabDepth);
@@ -176,6 +180,7 @@ bool SelectionTool::mouseRelease(QMouseEvent* event) {
         m_flyKeys.clear();
     }
     if (!m_dragMoved) clickSelect(event->button());
+    else if (m_gesture == Gesture::BoxSelect) boxSelect(*rubberBand());
     m_gesture = Gesture::None;
     m_dragStartBodies.clear();
     m_dragIndices.clear();
@@ -205,6 +210,43 @@ void SelectionTool::clickSelect(Qt::MouseButton button) {
     } else if (!extend) {
         m_document->setSelectedBodies({m_clickedBody});
     }
+}
+
+std::optional<QRect> SelectionTool::rubberBand() const {
+    if (m_gesture != Gesture::BoxSelect || !m_dragMoved) return std::nullopt;
+    return QRect(m_pressMouse, m_lastMouse).normalized();
+}
+
+void SelectionTool::boxSelect(const QRect& box) {
+    // A body is in the box when its centre (the live one: what the view shows) projects inside it:
+    // one point per body, so a large ground seen across the whole view is not caught by every box.
+    const simcore::World* world = m_simulation ? m_simulation->world() : nullptr;
+    static const std::vector<simcore::BodyId> kNoBodies;
+    const std::vector<simcore::BodyId>& ids = m_simulation ? m_simulation->bodyIds() : kNoBodies;
+    const float width = static_cast<float>(m_viewport.width()), height = static_cast<float>(m_viewport.height());
+    QList<int> inBox;
+    for (int i = 0; i < m_document->bodyCount(); ++i) {
+        const std::size_t slot = static_cast<std::size_t>(i);
+        const glm::vec3 centre = world && slot < ids.size() ? world->position(ids[slot]) : m_document->body(i).body.position;
+        const glm::vec3 pixel = m_viewport.camera().project(centre, width, height);
+        if (pixel.z > 1.0f || pixel.z < 0.0f) continue;  // behind the eye or beyond the far plane
+        if (box.contains(QPoint(static_cast<int>(std::floor(pixel.x)), static_cast<int>(std::floor(pixel.y))))) inBox << i;
+    }
+    // Plain replaces the selection (dropping selected joints, as a click on nothing does), Shift
+    // adds, Ctrl toggles (a box may hold selected and unselected bodies, so the two differ).
+    QList<int> bodies = m_document->selectedBodies();
+    QList<int> joints = m_document->selectedJoints();
+    if (m_pressModifiers & Qt::ControlModifier) {
+        for (int i : inBox) {
+            if (!bodies.removeOne(i)) bodies << i;
+        }
+    } else if (m_pressModifiers & Qt::ShiftModifier) {
+        bodies << inBox;
+    } else {
+        bodies = inBox;
+        joints.clear();
+    }
+    m_document->setSelection(bodies, joints);
 }
 
 void SelectionTool::wheel(QWheelEvent* event) {

@@ -9,7 +9,10 @@
 //                         the anchors of joints riding on it; with R held (or Alt, which many
 //                         Linux window managers take for moving windows): turn it about the
 //                         vertical; playing: pull it with a spring
-//   left drag elsewhere   orbit;  Shift or middle drag: pan;  wheel: zoom
+//   left drag on nothing  box select: the bodies whose centres the rectangle holds on screen
+//                         (live centres while running); Shift adds them, Ctrl toggles them
+//   left drag from a joint, or Ctrl/Shift-drag from a body: orbit
+//   middle drag           orbit;  Shift + middle drag: pan;  wheel: zoom
 //   right drag + WASDQE   fly (Shift: faster)
 
 #include "simcore/io/scene.h"
@@ -19,11 +22,13 @@
 #include <QList>
 #include <QObject>
 #include <QPoint>
+#include <QRect>
 #include <QSet>
 #include <QTimer>
 
 #include <glm/glm.hpp>
 
+#include <optional>
 #include <vector>
 
 class QFocusEvent;
@@ -56,17 +61,21 @@ public:
     bool keyRelease(QKeyEvent* event);
     void focusOut();
 
+    // The box-select rectangle while one is being dragged (widget pixels), for the view to draw.
+    std::optional<QRect> rubberBand() const;
+
 signals:
     void cameraChanged();
     void repaintNeeded();
 
 private:
-    enum class Gesture { None, Orbit, Pan, Fly, MoveBodies, RotateBodies, Grab };
+    enum class Gesture { None, Orbit, Pan, Fly, MoveBodies, RotateBodies, Grab, BoxSelect };
 
     void pressOnBody(QMouseEvent* event, const simcore::WorldRayHit& hit, int sceneIndex);
     void dragBodies(const QPointF& position);
     std::optional<glm::vec3> dragPlanePoint(const QPointF& pixel) const;
     void clickSelect(Qt::MouseButton button);
+    void boxSelect(const QRect& box);
     void flyTick();
 
     Viewport& m_viewport;

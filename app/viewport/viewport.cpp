@@ -10,6 +10,7 @@
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QOpenGLContext>
+#include <QPainter>
 #include <QWheelEvent>
 
 #include <algorithm>
@@ -202,6 +203,15 @@ glm::vec3 Viewport::placementPoint(float bodyHalfHeight) const {
     return point;
 }
 
+std::optional<glm::vec3> Viewport::surfacePointAt(const QPointF& pixel) const {
+    if (const auto hit = pick(pixel)) return hit->point;
+    const auto [origin, direction] = rayThrough(pixel);
+    if (direction.y >= 0.0f) return std::nullopt;  // looking up: the ground is never met
+    const float t = -origin.y / direction.y;
+    if (t < 0.0f || t > m_camera.rayReach()) return std::nullopt;
+    return origin + t * direction;
+}
+
 QImage Viewport::grabViewport() {
     return grabFramebuffer();
 }
@@ -302,6 +312,10 @@ void Viewport::paintGL() {
     }
     m_renderer.render({m_camera, width(), height(), static_cast<float>(devicePixelRatio()), defaultFramebufferObject(),
                        m_bodies.instancesByMesh(), m_bodies.outlined(), lines});
+    if (const std::optional<QRect> band = m_tool.rubberBand()) {
+        QPainter painter(this);
+        paintRubberBand(painter, *band);
+    }
 
     const qint64 now = m_frameClock.elapsed();
     m_frameTimes.push_back(now);

@@ -79,6 +79,9 @@ public:
     // Where a new body of this size could go: the ground point under the view's centre, raised so
     // the body clears the bodies already there (m).
     glm::vec3 placementPoint(float bodyHalfHeight) const;
+    // The point under a widget pixel on the body surface there, else on the ground plane y = 0, or
+    // nothing where the ray meets neither (the sky): where Paste puts bodies (m).
+    std::optional<glm::vec3> surfacePointAt(const QPointF& pixel) const;
 
     // Renders a frame and returns it as an image (the viewport's framebuffer, resolved from MSAA).
     QImage grabViewport();
