@@ -11,6 +11,9 @@
 //                         vertical; playing: pull it with a spring
 //   left drag elsewhere   orbit;  Shift or middle drag: pan;  wheel: zoom
 //   right drag + WASDQE   fly (Shift: faster)
+//   left drag on a gizmo  the gizmo's (gizmo_tool.h): presses on its handles go there first
+
+#include "app/viewport/gizmo_tool.h"
 
 #include "simcore/io/scene.h"
 #include "simcore/world/world.h"
@@ -44,8 +47,16 @@ public:
     // Picks and moves the camera through `viewport`, which outlives the tool.
     explicit SelectionTool(Viewport& viewport);
 
-    void setSimulation(SimulationController* simulation) { m_simulation = simulation; }
-    void setDocument(SceneDocument* document) { m_document = document; }
+    void setSimulation(SimulationController* simulation) {
+        m_simulation = simulation;
+        m_gizmo.setSimulation(simulation);
+    }
+    void setDocument(SceneDocument* document) {
+        m_document = document;
+        m_gizmo.setDocument(document);
+    }
+    GizmoTool& gizmo() { return m_gizmo; }
+    const GizmoTool& gizmo() const { return m_gizmo; }
 
     // Each returns whether the tool used the event (the widget passes on the others).
     bool mousePress(QMouseEvent* event);
@@ -55,13 +66,16 @@ public:
     bool keyPress(QKeyEvent* event);
     bool keyRelease(QKeyEvent* event);
     void focusOut();
+    // Whether the tool takes this key ahead of the window's shortcuts (fly keys while flying,
+    // Escape during a gizmo drag).
+    bool wantsKey(const QKeyEvent* event) const;
 
 signals:
     void cameraChanged();
     void repaintNeeded();
 
 private:
-    enum class Gesture { None, Orbit, Pan, Fly, MoveBodies, RotateBodies, Grab };
+    enum class Gesture { None, Orbit, Pan, Fly, MoveBodies, RotateBodies, Grab, Gizmo };
 
     void pressOnBody(QMouseEvent* event, const simcore::WorldRayHit& hit, int sceneIndex);
     void dragBodies(const QPointF& position);
@@ -93,6 +107,7 @@ private:
     QSet<int> m_flyKeys;
     QTimer m_flyTimer;
     QElapsedTimer m_flyClock;
+    GizmoTool m_gizmo;
 };
 
 }  // namespace interplay

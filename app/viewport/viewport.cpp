@@ -4,6 +4,7 @@
 #include "app/simulation/simulation_controller.h"
 #include "app/viewport/debug_draw_options.h"
 #include "app/viewport/debug_overlay.h"
+#include "app/viewport/gizmo_overlay.h"
 
 #include "simcore/world/world.h"
 
@@ -27,6 +28,7 @@ constexpr float kJointPickPixels = 8.0f;
 
 Viewport::Viewport(QWidget* parent) : QOpenGLWidget(parent) {
     setFocusPolicy(Qt::StrongFocus);
+    setMouseTracking(true);  // gizmo handles light up under the cursor
     setMinimumSize(160, 120);
     connect(&m_tool, &SelectionTool::cameraChanged, this, &Viewport::cameraChanged);
     connect(&m_tool, &SelectionTool::repaintNeeded, this, qOverload<>(&QWidget::update));
@@ -300,8 +302,13 @@ void Viewport::paintGL() {
         world->draw(overlay, overlay.worldOptions());
         lines = overlay.finish(m_document ? m_document->selectedJoints() : kNothingSelected, m_simulation->grabLine());
     }
+    std::vector<OverlayVertex> gizmo;
+    if (const auto placement = m_tool.gizmo().placement()) {
+        gizmo = gizmoTriangles(*placement, *m_tool.gizmo().mode(), m_tool.gizmo().highlighted(), m_camera,
+                               static_cast<float>(width()), static_cast<float>(height()));
+    }
     m_renderer.render({m_camera, width(), height(), static_cast<float>(devicePixelRatio()), defaultFramebufferObject(),
-                       m_bodies.instancesByMesh(), m_bodies.outlined(), lines});
+                       m_bodies.instancesByMesh(), m_bodies.outlined(), lines, gizmo});
 
     const qint64 now = m_frameClock.elapsed();
     m_frameTimes.push_back(now);
@@ -309,6 +316,16 @@ void Viewport::paintGL() {
 }
 
 // ---- Mouse and keys: the selection tool's ------------------------------------------------------
+
+bool Viewport::event(QEvent* event) {
+    // Keys the tool needs mid-gesture (W while flying, Escape during a gizmo drag) come before the
+    // window's shortcuts on them.
+    if (event->type() == QEvent::ShortcutOverride && m_tool.wantsKey(static_cast<QKeyEvent*>(event))) {
+        event->accept();
+        return true;
+    }
+    return QOpenGLWidget::event(event);
+}
 
 void Viewport::mousePressEvent(QMouseEvent* event) {
     if (m_tool.mousePress(event)) event->accept();
