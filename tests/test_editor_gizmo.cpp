@@ -55,6 +55,8 @@ private slots:
     void escapeOrRightClickCancels();
     void movingAJointedBodyCarriesItsAnchors();
     void pressesAwayFromTheHandlesStillDragBodies();
+    void hoveredHandleLightsUp();
+    void flyKeysStillFlyDuringARightDrag();
 
 private:
     Viewport* viewport() const { return m_window->viewport(); }
@@ -421,6 +423,48 @@ void TestEditorGizmo::pressesAwayFromTheHandlesStillDragBodies() {
     QTest::keyClick(viewport(), Qt::Key_W);
     QCOMPARE(viewport()->gizmoMode(), std::nullopt);
     QVERIFY(!viewport()->gizmoPlacement());
+}
+
+void TestEditorGizmo::hoveredHandleLightsUp() {
+    select({bodyNamed("sphere")});
+    // The middle of the x arrow's shaft, in the framebuffer's pixels.
+    const glm::vec3 onShaft = grabPoint(Handle::AxisX);
+    const QPoint pixel = pixelOf(onShaft);
+    const auto colorAt = [&] {
+        const QImage image = viewport()->grabViewport();
+        return image.pixelColor(QPoint(pixel * image.devicePixelRatio()));
+    };
+    QTest::mouseMove(viewport(), pixel + QPoint(0, 150));  // away from every handle
+    const QColor idle = colorAt();
+    // The x arrow is red: much more red than green.
+    QVERIFY2(idle.red() > 180 && idle.green() < 140, qPrintable(idle.name()));
+    QTest::mouseMove(viewport(), pixel);
+    const QColor hovered = colorAt();
+    // Lit: pale yellow, as bright in green as in red.
+    QVERIFY2(hovered.red() > 200 && hovered.green() > 200, qPrintable(hovered.name()));
+    QTest::mouseMove(viewport(), pixel + QPoint(0, 150));
+    QCOMPARE(colorAt(), idle);
+}
+
+void TestEditorGizmo::flyKeysStillFlyDuringARightDrag() {
+    // W and E are the gizmo's keys, and also fly forward and up while the right button is held.
+    const glm::vec3 eye = viewport()->camera().eye();
+    const glm::vec3 forward = viewport()->camera().forward();
+    const QPoint centre(viewport()->width() / 2, viewport()->height() / 2);
+    viewport()->setFocus();
+    QTest::mousePress(viewport(), Qt::RightButton, {}, centre);
+    QTest::keyPress(viewport(), Qt::Key_W);
+    QTest::keyPress(viewport(), Qt::Key_E);
+    // Forward (which looks down a little) and up together: along both.
+    QTRY_VERIFY(glm::dot(viewport()->camera().eye() - eye, forward) > 0.5f &&
+                glm::dot(viewport()->camera().eye() - eye, viewport()->camera().up()) > 0.5f);
+    QTest::keyRelease(viewport(), Qt::Key_E);
+    QTest::keyRelease(viewport(), Qt::Key_W);
+    QTest::mouseRelease(viewport(), Qt::RightButton, {}, centre);
+    QCOMPARE(viewport()->gizmoMode(), std::optional(interplay::gizmo::Mode::Move));
+    // Without the right button, E is the rotate gizmo's key again.
+    QTest::keyClick(viewport(), Qt::Key_E);
+    QCOMPARE(viewport()->gizmoMode(), std::optional(interplay::gizmo::Mode::Rotate));
 }
 
 int main(int argc, char** argv) {
