@@ -444,6 +444,12 @@ void TestEditorGizmo::hoveredHandleLightsUp() {
     QVERIFY2(hovered.red() > 200 && hovered.green() > 200, qPrintable(hovered.name()));
     QTest::mouseMove(viewport(), pixel + QPoint(0, 150));
     QCOMPARE(colorAt(), idle);
+    // Nor does it stay lit when the cursor leaves the view from over it.
+    QTest::mouseMove(viewport(), pixel);
+    QCOMPARE(colorAt(), hovered);
+    QEvent leave(QEvent::Leave);
+    QApplication::sendEvent(viewport(), &leave);
+    QCOMPARE(colorAt(), idle);
 }
 
 void TestEditorGizmo::flyKeysStillFlyDuringARightDrag() {

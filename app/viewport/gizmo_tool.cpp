@@ -146,4 +146,10 @@ void GizmoTool::hover(const QPointF& position) {
     emit repaintNeeded();
 }
 
+void GizmoTool::clearHover() {
+    if (isDragging() || m_highlighted == gizmo::Handle::None) return;
+    m_highlighted = gizmo::Handle::None;
+    emit repaintNeeded();
+}
+
 }  // namespace interplay

@@ -59,6 +59,8 @@ public:
     bool isDragging() const { return m_drag.has_value(); }
     // With no drag: lights up the handle under the cursor.
     void hover(const QPointF& position);
+    // The cursor left the view: no handle is lit.
+    void clearHover();
 
 signals:
     void repaintNeeded();

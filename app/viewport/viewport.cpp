@@ -356,6 +356,11 @@ void Viewport::keyReleaseEvent(QKeyEvent* event) {
     else QOpenGLWidget::keyReleaseEvent(event);
 }
 
+void Viewport::leaveEvent(QEvent* event) {
+    m_tool.gizmo().clearHover();
+    QOpenGLWidget::leaveEvent(event);
+}
+
 void Viewport::focusOutEvent(QFocusEvent* event) {
     m_tool.focusOut();
     QOpenGLWidget::focusOutEvent(event);
