@@ -56,6 +56,7 @@ private slots:
     void movingAJointedBodyCarriesItsAnchors();
     void pressesAwayFromTheHandlesStillDragBodies();
     void hoveredHandleLightsUp();
+    void deletingTheBodiesMidDragEndsTheDrag();
     void flyKeysStillFlyDuringARightDrag();
 
 private:
@@ -450,6 +451,29 @@ void TestEditorGizmo::hoveredHandleLightsUp() {
     QEvent leave(QEvent::Leave);
     QApplication::sendEvent(viewport(), &leave);
     QCOMPARE(colorAt(), idle);
+}
+
+void TestEditorGizmo::deletingTheBodiesMidDragEndsTheDrag() {
+    const int sphere = bodyNamed("sphere");
+    select({sphere});
+    const int bodies = document()->bodyCount();
+    const glm::vec3 grabbed = grabPoint(Handle::AxisX);
+    const QPoint to = pixelOf(grabbed + glm::vec3(1.0f, 0.0f, 0.0f));
+    drag(pixelOf(grabbed), to, {}, false);
+    const glm::vec3 moved = document()->body(sphere).body.position;
+    QTest::keyClick(viewport(), Qt::Key_Delete);
+    QCOMPARE(document()->bodyCount(), bodies - 1);
+    // The rest of the gesture moves nothing (body `sphere` is now the next one), and a cancel
+    // leaves the history as it is: the move, then the delete.
+    const glm::vec3 next = document()->body(sphere).body.position;
+    QTest::mouseMove(viewport(), to + QPoint(40, 0));
+    QTest::keyClick(viewport(), Qt::Key_Escape);
+    QTest::mouseRelease(viewport(), Qt::LeftButton, {}, to + QPoint(40, 0));
+    QCOMPARE(document()->body(sphere).body.position, next);
+    QUndoStack* stack = document()->undoStack();
+    QCOMPARE(stack->count(), 2);
+    stack->undo();
+    QCOMPARE(document()->body(sphere).body.position, moved);
 }
 
 void TestEditorGizmo::flyKeysStillFlyDuringARightDrag() {

@@ -27,6 +27,18 @@ float preferredStep(const char* key, double fallback) {
 
 }  // namespace
 
+void GizmoTool::setDocument(SceneDocument* document) {
+    if (m_document) disconnect(m_document, nullptr, this, nullptr);
+    if (isDragging()) abandon();
+    m_document = document;
+    if (!m_document) return;
+    // The drag's body indices would name other bodies, or none.
+    connect(m_document, &SceneDocument::sceneReplaced, this, &GizmoTool::abandon);
+    connect(m_document, &SceneDocument::bodyAboutToBeInserted, this, &GizmoTool::abandon);
+    connect(m_document, &SceneDocument::bodyAboutToBeRemoved, this, &GizmoTool::abandon);
+    connect(m_document, &SceneDocument::bodyAboutToBeMoved, this, &GizmoTool::abandon);
+}
+
 void GizmoTool::setMode(std::optional<gizmo::Mode> mode) {
     if (m_mode == mode) return;
     if (isDragging()) cancel();
@@ -133,6 +145,10 @@ void GizmoTool::cancel() {
     // leaves the history.
     if (m_drag && m_pushed) push(m_startBodies);
     release();
+}
+
+void GizmoTool::abandon() {
+    if (isDragging()) release();
 }
 
 void GizmoTool::hover(const QPointF& position) {

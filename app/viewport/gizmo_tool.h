@@ -37,7 +37,7 @@ public:
     explicit GizmoTool(Viewport& viewport) : m_viewport(viewport) {}
 
     void setSimulation(SimulationController* simulation) { m_simulation = simulation; }
-    void setDocument(SceneDocument* document) { m_document = document; }
+    void setDocument(SceneDocument* document);
 
     // The gizmo shown on the selection: a mode, or none; world or local axes.
     void setMode(std::optional<gizmo::Mode> mode);
@@ -67,6 +67,9 @@ signals:
 
 private:
     void push(std::vector<simcore::SceneBody> after);
+    // Ends a drag whose bodies changed places or went (a delete mid-drag, a new scene): what it
+    // pushed stays one finished entry, and the rest of the gesture moves nothing.
+    void abandon();
 
     Viewport& m_viewport;
     SimulationController* m_simulation = nullptr;
