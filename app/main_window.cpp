@@ -264,6 +264,30 @@ void MainWindow::createActions() {
                      tr("Switch between orthographic and perspective projection (numpad 5)"));
     a->setCheckable(true);
     connect(a, &QAction::toggled, m_viewport, &Viewport::setOrthographic);
+    // The transform gizmo: W and E as in Godot and Unity (R held already turns a dragged body);
+    // neither checked shows none. L for local axes, which Godot and Unity give no one key.
+    auto* gizmoModes = new QActionGroup(this);
+    gizmoModes->setExclusionPolicy(QActionGroup::ExclusionPolicy::ExclusiveOptional);
+    QAction* moveGizmo = createAction(gizmoModes, QStringLiteral("gizmoMove"), tr("&Move Gizmo"), Qt::Key_W,
+                                      tr("Show arrows and plane handles on the selection to move it (W)"));
+    QAction* rotateGizmo = createAction(gizmoModes, QStringLiteral("gizmoRotate"), tr("Rotate &Gizmo"), Qt::Key_E,
+                                        tr("Show rings on the selection to turn it (E)"));
+    for (QAction* mode : {moveGizmo, rotateGizmo}) {
+        mode->setCheckable(true);
+        gizmoModes->addAction(mode);
+    }
+    moveGizmo->setChecked(m_viewport->gizmoMode() == gizmo::Mode::Move);
+    rotateGizmo->setChecked(m_viewport->gizmoMode() == gizmo::Mode::Rotate);
+    connect(gizmoModes, &QActionGroup::triggered, m_viewport, [this, moveGizmo, rotateGizmo] {
+        m_viewport->setGizmoMode(moveGizmo->isChecked()     ? std::optional(gizmo::Mode::Move)
+                                 : rotateGizmo->isChecked() ? std::optional(gizmo::Mode::Rotate)
+                                                            : std::nullopt);
+    });
+    a = createAction(this, QStringLiteral("gizmoLocal"), tr("&Local Gizmo Axes"), Qt::Key_L,
+                     tr("Align the gizmo with the active body's axes instead of the world's (L)"));
+    a->setCheckable(true);
+    connect(a, &QAction::toggled, m_viewport,
+            [this](bool local) { m_viewport->setGizmoSpace(local ? gizmo::Space::Local : gizmo::Space::World); });
 
     // Simulation.
     m_playAction = createAction(this, QStringLiteral("play"), tr("&Play"), Qt::Key_Space,
@@ -429,6 +453,10 @@ void MainWindow::createMenusAndToolBars() {
     m_viewMenu->addAction(action(QStringLiteral("frameAll")));
     m_viewMenu->addSeparator();
     for (const char* name : {"viewFront", "viewBack", "viewRight", "viewLeft", "viewTop", "viewBottom", "orthographic"}) {
+        m_viewMenu->addAction(action(QString::fromLatin1(name)));
+    }
+    m_viewMenu->addSeparator();
+    for (const char* name : {"gizmoMove", "gizmoRotate", "gizmoLocal"}) {
         m_viewMenu->addAction(action(QString::fromLatin1(name)));
     }
     m_viewMenu->addSeparator();

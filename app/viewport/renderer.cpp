@@ -368,6 +368,8 @@ void Renderer::render(const Frame& frame) {
         drawSelectionOutline(frame, viewProjection);
         drawLines(frame.lines, viewProjection);
     }
+    // 6. Screen-space overlays (the transform gizmo), over the debug lines too.
+    drawScreenTriangles(frame);
 }
 
 void Renderer::drawSelectionOutline(const Frame& frame, const glm::mat4& viewProjection) {
@@ -431,6 +433,26 @@ void Renderer::drawLines(const std::vector<OverlayVertex>& lines, const glm::mat
     setUniform(*m_lineProgram, "uViewProjection", viewProjection);
     glBindVertexArray(m_overlayVao);
     glDrawArrays(GL_LINES, 0, static_cast<GLsizei>(lines.size()));
+    glBindVertexArray(0);
+    glEnable(GL_DEPTH_TEST);
+}
+
+void Renderer::drawScreenTriangles(const Frame& frame) {
+    const std::vector<OverlayVertex>& triangles = frame.screenTriangles;
+    if (triangles.empty()) return;
+    glBindBuffer(GL_ARRAY_BUFFER, m_overlayVbo);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(triangles.size() * sizeof(OverlayVertex)), triangles.data(),
+                 GL_STREAM_DRAW);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_CULL_FACE);  // strokes are wound either way
+    m_lineProgram->bind();
+    // Widget pixels to clip space, y down as Qt's pixels are.
+    const glm::mat4 pixels = glm::ortho(0.0f, static_cast<float>(std::max(frame.width, 1)),
+                                        static_cast<float>(std::max(frame.height, 1)), 0.0f, -1.0f, 1.0f);
+    setUniform(*m_lineProgram, "uViewProjection", pixels);
+    glBindVertexArray(m_overlayVao);
+    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(triangles.size()));
     glBindVertexArray(0);
     glEnable(GL_DEPTH_TEST);
 }

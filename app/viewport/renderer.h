@@ -1,9 +1,10 @@
 #pragma once
 // The viewport's GL side: shader programs (the .glsl files in shaders/, compiled into the program
 // as Qt resources), the shape meshes, the shadow map and the passes of a frame: shadow map, sky,
-// lit bodies, ground grid, selection outline, debug lines. It draws what it is handed and knows
-// nothing of worlds or documents. All calls need the owning widget's context current; release()
-// must run before that context goes (the widget calls it on aboutToBeDestroyed, as in Qt's hellogl2).
+// lit bodies, ground grid, selection outline, debug lines, screen-space overlays (the gizmo). It
+// draws what it is handed and knows nothing of worlds or documents. All calls need the owning
+// widget's context current; release() must run before that context goes (the widget calls it on
+// aboutToBeDestroyed, as in Qt's hellogl2).
 
 #include "app/viewport/camera.h"
 
@@ -70,6 +71,9 @@ public:
         const std::vector<std::vector<BodyInstance>>& instancesByMesh;  // indexed by meshFor's answers
         const std::vector<OutlinedBody>& outlined;
         const std::vector<OverlayVertex>& lines;
+        // Drawn last, over everything: triangles in widget pixels (x right, y down), such as a
+        // transform gizmo's handles, which keep their size and stroke width on screen.
+        const std::vector<OverlayVertex>& screenTriangles;
     };
     void render(const Frame& frame);
 
@@ -91,6 +95,7 @@ private:
                        const std::vector<std::size_t>& firstInstance);
     void drawSelectionOutline(const Frame& frame, const glm::mat4& viewProjection);
     void drawLines(const std::vector<OverlayVertex>& lines, const glm::mat4& viewProjection);
+    void drawScreenTriangles(const Frame& frame);
     // Light-space box around what is in view, for the shadow map.
     static glm::mat4 lightViewProjection(const Camera& camera);
 

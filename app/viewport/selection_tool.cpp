@@ -24,15 +24,22 @@ constexpr float kFlySpeedPerMetre = 0.6f;
 constexpr float kFlyBoost = 4.0f;
 constexpr float kRotateDegreesPerPixel = 0.5f;  // R- or Alt-drag turning a body about the vertical
 constexpr int kClickJitterPixels = 3;           // a press that travels no further is still a click
+const QSet<int> kFlyKeys{Qt::Key_W, Qt::Key_A, Qt::Key_S, Qt::Key_D, Qt::Key_Q, Qt::Key_E, Qt::Key_Shift};
 
 }  // namespace
 
-SelectionTool::SelectionTool(Viewport& viewport) : m_viewport(viewport) {
+SelectionTool::SelectionTool(Viewport& viewport) : m_viewport(viewport), m_gizmo(viewport) {
+    connect(&m_gizmo, &GizmoTool::repaintNeeded, this, &SelectionTool::repaintNeeded);
     m_flyTimer.setInterval(16);
     connect(&m_flyTimer, &QTimer::timeout, this, &SelectionTool::flyTick);
 }
 
 bool SelectionTool::mousePress(QMouseEvent* event) {
+    if (m_gesture == Gesture::Gizmo && event->button() == Qt::RightButton) {
+        m_gizmo.cancel();
+        m_gesture = Gesture::None;
+        return true;
+    }
     if (m_gesture != Gesture::None) return true;  // a second button during a gesture: ignore it
     if (event->button() != Qt::RightButton && event->button() != Qt::MiddleButton &&
         event->button() != Qt::LeftButton) {
@@ -51,6 +58,8 @@ bool SelectionTool::mousePress(QMouseEvent* event) {
     } else if (event->button() == Qt::MiddleButton) {
         // As in Blender and Godot: the left button selects, the middle one turns the view.
         m_gesture = (event->modifiers() & Qt::ShiftModifier) ? Gesture::Pan : Gesture::Orbit;
+    } else if (m_gizmo.press(event->position())) {
+        m_gesture = Gesture::Gizmo;  // drawn over everything, the gizmo takes presses on its handles first
     } else {
         // Joint marks are drawn over the bodies, so a joint near the cursor takes the click (it is
         // selected on release, and a drag from it moves the camera, never a body), unless its point
@@ -144,7 +153,10 @@ void SelectionTool::dragBodies(const QPointF& position) {
 }
 
 bool SelectionTool::mouseMove(QMouseEvent* event) {
-    if (m_gesture == Gesture::None) return false;
+    if (m_gesture == Gesture::None) {
+        m_gizmo.hover(event->position());
+        return false;
+    }
     const QPoint position = event->position().toPoint();
     const QPoint delta = position - m_lastMouse;
     m_lastMouse = position;
@@ -159,6 +171,7 @@ bool SelectionTool::mouseMove(QMouseEvent* event) {
     case Gesture::MoveBodies:
     case Gesture::RotateBodies: dragBodies(event->position()); return true;
     case Gesture::BoxSelect: emit repaintNeeded(); return true;
+    case Gesture::Gizmo: m_gizmo.drag(event->position(), event->modifiers()); return true;
     case Gesture::Grab: {
         const auto [origin, direction] = m_viewport.rayThrough(event->position());
         m_simulation->moveGrab(origin + direction * m_grabDepth);
@@ -175,6 +188,11 @@ bool SelectionTool::mouseMove(QMouseEvent* event) {
 bool SelectionTool::mouseRelease(QMouseEvent* event) {
     if (m_gesture == Gesture::None) return false;
     if (m_gesture == Gesture::Grab) m_simulation->endGrab();
+    if (m_gesture == Gesture::Gizmo) {
+        m_gizmo.release();
+        m_gesture = Gesture::None;
+        return true;
+    }
     if (m_gesture == Gesture::Fly) {
         m_flyTimer.stop();
         m_flyKeys.clear();
@@ -256,13 +274,22 @@ void SelectionTool::wheel(QWheelEvent* event) {
     emit repaintNeeded();
 }
 
+bool SelectionTool::wantsKey(const QKeyEvent* event) const {
+    if (m_gesture == Gesture::Gizmo) return event->key() == Qt::Key_Escape;
+    return m_gesture == Gesture::Fly && kFlyKeys.contains(event->key());
+}
+
 bool SelectionTool::keyPress(QKeyEvent* event) {
+    if (m_gesture == Gesture::Gizmo && event->key() == Qt::Key_Escape) {
+        m_gizmo.cancel();
+        m_gesture = Gesture::None;
+        return true;
+    }
     if (event->key() == Qt::Key_R && !(event->modifiers() & ~Qt::KeypadModifier)) {
         m_rotateKeyHeld = true;
         return true;
     }
-    static const QSet<int> flyKeys{Qt::Key_W, Qt::Key_A, Qt::Key_S, Qt::Key_D, Qt::Key_Q, Qt::Key_E, Qt::Key_Shift};
-    if (m_gesture != Gesture::Fly || !flyKeys.contains(event->key())) return false;
+    if (m_gesture != Gesture::Fly || !kFlyKeys.contains(event->key())) return false;
     m_flyKeys.insert(event->key());
     return true;
 }

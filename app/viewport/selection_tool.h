@@ -14,6 +14,9 @@
 //   left drag from a joint, or Ctrl/Shift-drag from a body: orbit
 //   middle drag           orbit;  Shift + middle drag: pan;  wheel: zoom
 //   right drag + WASDQE   fly (Shift: faster)
+//   left drag on a gizmo  the gizmo's (gizmo_tool.h): presses on its handles go there first
+
+#include "app/viewport/gizmo_tool.h"
 
 #include "simcore/io/scene.h"
 #include "simcore/world/world.h"
@@ -49,8 +52,16 @@ public:
     // Picks and moves the camera through `viewport`, which outlives the tool.
     explicit SelectionTool(Viewport& viewport);
 
-    void setSimulation(SimulationController* simulation) { m_simulation = simulation; }
-    void setDocument(SceneDocument* document) { m_document = document; }
+    void setSimulation(SimulationController* simulation) {
+        m_simulation = simulation;
+        m_gizmo.setSimulation(simulation);
+    }
+    void setDocument(SceneDocument* document) {
+        m_document = document;
+        m_gizmo.setDocument(document);
+    }
+    GizmoTool& gizmo() { return m_gizmo; }
+    const GizmoTool& gizmo() const { return m_gizmo; }
 
     // Each returns whether the tool used the event (the widget passes on the others).
     bool mousePress(QMouseEvent* event);
@@ -60,6 +71,9 @@ public:
     bool keyPress(QKeyEvent* event);
     bool keyRelease(QKeyEvent* event);
     void focusOut();
+    // Whether the tool takes this key ahead of the window's shortcuts (fly keys while flying,
+    // Escape during a gizmo drag).
+    bool wantsKey(const QKeyEvent* event) const;
 
     // The box-select rectangle while one is being dragged (widget pixels), for the view to draw.
     std::optional<QRect> rubberBand() const;
@@ -69,7 +83,7 @@ signals:
     void repaintNeeded();
 
 private:
-    enum class Gesture { None, Orbit, Pan, Fly, MoveBodies, RotateBodies, Grab, BoxSelect };
+    enum class Gesture { None, Orbit, Pan, Fly, MoveBodies, RotateBodies, Grab, BoxSelect, Gizmo };
 
     void pressOnBody(QMouseEvent* event, const simcore::WorldRayHit& hit, int sceneIndex);
     void dragBodies(const QPointF& position);
@@ -102,6 +116,7 @@ private:
     QSet<int> m_flyKeys;
     QTimer m_flyTimer;
     QElapsedTimer m_flyClock;
+    GizmoTool m_gizmo;
 };
 
 }  // namespace interplay

@@ -4,6 +4,7 @@
 #include "app/simulation/simulation_controller.h"
 #include "app/viewport/debug_draw_options.h"
 #include "app/viewport/debug_overlay.h"
+#include "app/viewport/gizmo_overlay.h"
 
 #include "simcore/world/world.h"
 
@@ -28,6 +29,7 @@ constexpr float kJointPickPixels = 8.0f;
 
 Viewport::Viewport(QWidget* parent) : QOpenGLWidget(parent) {
     setFocusPolicy(Qt::StrongFocus);
+    setMouseTracking(true);  // gizmo handles light up under the cursor
     setMinimumSize(160, 120);
     connect(&m_tool, &SelectionTool::cameraChanged, this, &Viewport::cameraChanged);
     connect(&m_tool, &SelectionTool::repaintNeeded, this, qOverload<>(&QWidget::update));
@@ -310,8 +312,13 @@ void Viewport::paintGL() {
         world->draw(overlay, overlay.worldOptions());
         lines = overlay.finish(m_document ? m_document->selectedJoints() : kNothingSelected, m_simulation->grabLine());
     }
+    std::vector<OverlayVertex> gizmo;
+    if (const auto placement = m_tool.gizmo().placement()) {
+        gizmo = gizmoTriangles(*placement, *m_tool.gizmo().mode(), m_tool.gizmo().highlighted(), m_camera,
+                               static_cast<float>(width()), static_cast<float>(height()));
+    }
     m_renderer.render({m_camera, width(), height(), static_cast<float>(devicePixelRatio()), defaultFramebufferObject(),
-                       m_bodies.instancesByMesh(), m_bodies.outlined(), lines});
+                       m_bodies.instancesByMesh(), m_bodies.outlined(), lines, gizmo});
     if (const std::optional<QRect> band = m_tool.rubberBand()) {
         QPainter painter(this);
         paintRubberBand(painter, *band);
@@ -323,6 +330,16 @@ void Viewport::paintGL() {
 }
 
 // ---- Mouse and keys: the selection tool's ------------------------------------------------------
+
+bool Viewport::event(QEvent* event) {
+    // Keys the tool needs mid-gesture (W while flying, Escape during a gizmo drag) come before the
+    // window's shortcuts on them.
+    if (event->type() == QEvent::ShortcutOverride && m_tool.wantsKey(static_cast<QKeyEvent*>(event))) {
+        event->accept();
+        return true;
+    }
+    return QOpenGLWidget::event(event);
+}
 
 void Viewport::mousePressEvent(QMouseEvent* event) {
     if (m_tool.mousePress(event)) event->accept();
@@ -351,6 +368,11 @@ void Viewport::keyPressEvent(QKeyEvent* event) {
 void Viewport::keyReleaseEvent(QKeyEvent* event) {
     if (m_tool.keyRelease(event)) event->accept();
     else QOpenGLWidget::keyReleaseEvent(event);
+}
+
+void Viewport::leaveEvent(QEvent* event) {
+    m_tool.gizmo().clearHover();
+    QOpenGLWidget::leaveEvent(event);
 }
 
 void Viewport::focusOutEvent(QFocusEvent* event) {

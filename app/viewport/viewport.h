@@ -5,8 +5,8 @@
 // (bounds, contact points and normals). The widget wires three parts together: everything it
 // draws comes from World::draw (BodyBatches gathers the bodies, DebugOverlay the lines), the
 // Renderer draws it, and the SelectionTool handles mouse and keys (see selection_tool.h for the
-// gestures). GL resources live as long as the widget's context (released on aboutToBeDestroyed,
-// as in Qt's hellogl2 example).
+// gestures, gizmo_tool.h for the transform gizmo, which gizmo_overlay draws). GL resources live as
+// long as the widget's context (released on aboutToBeDestroyed, as in Qt's hellogl2 example).
 
 #include "app/viewport/body_batches.h"
 #include "app/viewport/camera.h"
@@ -61,6 +61,14 @@ public:
     void lookAlong(AxisView view);
     void setOrthographic(bool orthographic);
 
+    // The transform gizmo on the selection: move, rotate or none; world or local axes.
+    void setGizmoMode(std::optional<gizmo::Mode> mode) { m_tool.gizmo().setMode(mode); }
+    std::optional<gizmo::Mode> gizmoMode() const { return m_tool.gizmo().mode(); }
+    void setGizmoSpace(gizmo::Space space) { m_tool.gizmo().setSpace(space); }
+    gizmo::Space gizmoSpace() const { return m_tool.gizmo().space(); }
+    // Where the gizmo is drawn now, if it is.
+    std::optional<gizmo::Placement> gizmoPlacement() const { return m_tool.gizmo().placement(); }
+
     // The world ray through a widget pixel (unit direction; the origin is the eye, or under an
     // orthographic projection the pixel's point on the near plane, the rays being parallel).
     std::pair<glm::vec3, glm::vec3> rayThrough(const QPointF& pixel) const;
@@ -98,6 +106,7 @@ signals:
     void cameraChanged();
 
 protected:
+    bool event(QEvent* event) override;
     void initializeGL() override;
     void paintGL() override;
 
@@ -108,6 +117,7 @@ protected:
     void keyPressEvent(QKeyEvent* event) override;
     void keyReleaseEvent(QKeyEvent* event) override;
     void focusOutEvent(QFocusEvent* event) override;
+    void leaveEvent(QEvent* event) override;
 
 private:
     void cleanup();
