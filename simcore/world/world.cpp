@@ -18,7 +18,7 @@ World::World(const WorldSettings& settings) { setSettings(settings); }
 
 void World::setSettings(const WorldSettings& settings) {
     validateSettings(settings);
-    if (!pool_ || settings.threads != settings_.threads) pool_ = std::make_unique<TaskPool>(settings.threads);
+    if (!threads_.configured() || settings.threads != settings_.threads) threads_.configure(settings.threads);
     settings_ = settings;
     if (!settings_.effects[Effect::Sleeping] || !settings_.sleep.enabled) {
         for (std::size_t i = 0; i < bodies_.size(); ++i) wakeIndex(i);
@@ -188,7 +188,7 @@ void World::step() {
         params.gravity = velocityParams.gravity;
         params.solver = settings_.solver;
         params.contact = settings_.contact;
-        contactSolver_.prepare(contactManager_.contacts(), bodies_, params, *pool_);
+        contactSolver_.prepare(contactManager_.contacts(), bodies_, params, threads_.pool());
     }
     if (joints) {
         if (!contacts) {
@@ -209,7 +209,7 @@ void World::step() {
     for (int substep = 0; substep < settings_.substeps; ++substep) {
         {
             ScopedStageTimer timer(slot(Stage::IntegrateVelocities));
-            profile.counters.boundedVelocities += integrator_.integrateVelocities(bodies_, settings_.integrator, velocityParams, h, *pool_);
+            profile.counters.boundedVelocities += integrator_.integrateVelocities(bodies_, settings_.integrator, velocityParams, h, threads_.pool());
         }
         if (solveContacts || solveJoints) {
             ScopedStageTimer timer(slot(Stage::SolveConstraints));
@@ -223,7 +223,7 @@ void World::step() {
         }
         {
             ScopedStageTimer timer(slot(Stage::IntegratePositions));
-            profile.counters.boundedVelocities += integrator_.integratePositions(bodies_, settings_.integrator, h, *pool_);
+            profile.counters.boundedVelocities += integrator_.integratePositions(bodies_, settings_.integrator, h, threads_.pool());
         }
         if (bounce) {
             // Before relax, which would slow a body about to hit down to the speed that just closes
@@ -319,7 +319,7 @@ std::size_t World::updateBroadPhase(float dt) {
 }
 
 void World::updateContacts() {
-    contactManager_.updateManifolds(bodies_, broadPhase_, settings_.contact.speculativeDistance, settings_.timeStep, *pool_);
+    contactManager_.updateManifolds(bodies_, broadPhase_, settings_.contact.speculativeDistance, settings_.timeStep, threads_.pool());
 }
 
 void World::recordSweepStarts() {
