@@ -356,9 +356,9 @@ void MainWindow::createDocks() {
     QDockWidget* settings = addDock(QStringLiteral("settingsDock"), tr("Simulation"), m_settingsPanel, Qt::RightDockWidgetArea);
     QDockWidget* profiler = addDock(QStringLiteral("profilerDock"), tr("Profiler"), m_profiler, Qt::BottomDockWidgetArea);
     QDockWidget* liveState = addDock(QStringLiteral("liveStateDock"), tr("Live State"), m_liveState, Qt::RightDockWidgetArea);
+    splitDockWidget(inspector, liveState, Qt::Vertical);  // before tabifying: a tab group would take it as a tab
     tabifyDockWidget(inspector, settings);
     inspector->raise();
-    splitDockWidget(inspector, liveState, Qt::Vertical);
     splitDockWidget(scene, historyDock, Qt::Vertical);
     for (QDockWidget* dock : {scene, historyDock, inspector, settings, profiler, liveState}) {
         dock->toggleViewAction()->setObjectName(dock->objectName() + QStringLiteral("Toggle"));
@@ -371,10 +371,12 @@ void MainWindow::arrangeDefaultLayout() {
     auto* history = findChild<QDockWidget*>(QStringLiteral("historyDock"));
     auto* inspector = findChild<QDockWidget*>(QStringLiteral("inspectorDock"));
     auto* profiler = findChild<QDockWidget*>(QStringLiteral("profilerDock"));
+    auto* liveState = findChild<QDockWidget*>(QStringLiteral("liveStateDock"));
     for (QDockWidget* dock : findChildren<QDockWidget*>()) dock->show();
     resizeDocks({scene, inspector}, {300, 340}, Qt::Horizontal);
     resizeDocks({scene, history}, {420, 220}, Qt::Vertical);
     resizeDocks({profiler}, {200}, Qt::Vertical);
+    resizeDocks({inspector, liveState}, {460, 300}, Qt::Vertical);
 }
 
 void MainWindow::createMenusAndToolBars() {

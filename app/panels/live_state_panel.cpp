@@ -76,7 +76,6 @@ LiveStatePanel::LiveStatePanel(SceneDocument* document, SimulationController* si
 
     // Playback runs at the display's rate; the figures need not (and the text would only flicker).
     m_refreshTimer.setSingleShot(true);
-    m_refreshTimer.setInterval(1000 / kRefreshHz);
     connect(&m_refreshTimer, &QTimer::timeout, this, &LiveStatePanel::refresh);
     connect(m_simulation, &SimulationController::stepped, this, &LiveStatePanel::scheduleRefresh);
     connect(m_simulation, &SimulationController::posesEdited, this, &LiveStatePanel::scheduleRefresh);
@@ -100,7 +99,14 @@ QString LiveStatePanel::figure(const QString& key) const {
 }
 
 void LiveStatePanel::scheduleRefresh() {
-    if (!m_refreshTimer.isActive()) m_refreshTimer.start();
+    // At once when the last refresh is old enough (a step or a scrub after a pause shows at once),
+    // else once the interval is up: never more than kRefreshHz a second.
+    constexpr qint64 interval = 1000 / kRefreshHz;  // ms
+    if (!m_lastRefresh.isValid() || m_lastRefresh.elapsed() >= interval) {
+        refresh();
+        return;
+    }
+    if (!m_refreshTimer.isActive()) m_refreshTimer.start(int(interval - m_lastRefresh.elapsed()));
 }
 
 LiveState LiveStatePanel::measure() const {
@@ -131,6 +137,7 @@ LiveState LiveStatePanel::measure() const {
 
 void LiveStatePanel::refresh() {
     m_refreshTimer.stop();
+    m_lastRefresh.start();
     m_shown = measure();
     const LiveState& s = m_shown;
     const bool one = s.bodies == 1;

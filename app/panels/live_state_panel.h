@@ -7,6 +7,7 @@
 
 #include "simcore/world/world.h"
 
+#include <QElapsedTimer>
 #include <QTimer>
 #include <QWidget>
 
@@ -66,6 +67,7 @@ private:
     SimulationController* m_simulation;
     Viewport* m_viewport = nullptr;
     QTimer m_refreshTimer;
+    QElapsedTimer m_lastRefresh;
     QLabel* m_heading;
     QLabel* m_empty;
     QWidget* m_rows;
