@@ -231,7 +231,7 @@ void MainWindow::createActions() {
         QIcon::fromTheme(QStringLiteral("edit-delete"), s->standardIcon(QStyle::SP_TrashIcon)));
     a = createAction(
         this, QStringLiteral("applyPose"), tr("Apply Simulated &Pose"), {},
-        tr("Make the bodies' current simulated positions, orientations and velocities the authored scene"));
+        tr("Make the bodies' simulated positions, orientations and velocities (of the frame shown) the authored scene"));
     connect(a, &QAction::triggered, this, &MainWindow::applySimulatedPose);
 
     // View.
