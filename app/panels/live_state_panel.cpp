@@ -8,6 +8,7 @@
 #include <QFormLayout>
 #include <QHelpEvent>
 #include <QLabel>
+#include <QScrollArea>
 #include <QToolTip>
 #include <QVBoxLayout>
 
@@ -68,11 +69,23 @@ LiveStatePanel::LiveStatePanel(SceneDocument* document, SimulationController* si
     addRow(QStringLiteral("contactForce"), tr("Contact force (N)"));
     addRow(QStringLiteral("state"), tr("State"));
 
+    // In a scroll area, so rows appearing with a selection never resize the dock (and with it
+    // the viewport under the cursor).
+    auto* content = new QWidget;
+    auto* contentLayout = new QVBoxLayout(content);
+    contentLayout->addWidget(m_heading);
+    contentLayout->addWidget(m_empty);
+    contentLayout->addWidget(m_rows);
+    contentLayout->addStretch(1);
+    auto* scroll = new QScrollArea;
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidgetResizable(true);
+    scroll->setWidget(content);
+    scroll->viewport()->setAutoFillBackground(false);
+    content->setAutoFillBackground(false);
     auto* layout = new QVBoxLayout(this);
-    layout->addWidget(m_heading);
-    layout->addWidget(m_empty);
-    layout->addWidget(m_rows);
-    layout->addStretch(1);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(scroll);
 
     // Playback runs at the display's rate; the figures need not (and the text would only flicker).
     m_refreshTimer.setSingleShot(true);
