@@ -7,9 +7,11 @@
 #include "app/document/scene_tree_model.h"
 #include "app/help_dialog.h"
 #include "app/panels/inspector_panel.h"
+#include "app/panels/live_state_panel.h"
 #include "app/panels/profiler_panel.h"
 #include "app/panels/simulation_settings_model.h"
 #include "app/panels/simulation_settings_panel.h"
+#include "app/panels/timeline_bar.h"
 #include "app/simulation/simulation_controller.h"
 #include "app/viewport/debug_draw_options.h"
 #include "app/viewport/viewport.h"
@@ -43,6 +45,7 @@
 #include <QTreeView>
 #include <QUndoStack>
 #include <QUndoView>
+#include <QVBoxLayout>
 
 namespace interplay {
 namespace {
@@ -115,7 +118,15 @@ MainWindow::MainWindow(QWidget* parent)
         if (!m_viewport->rect().contains(pixel)) return std::nullopt;
         return m_viewport->surfacePointAt(pixel);
     });
-    setCentralWidget(m_viewport);
+    // The timeline bar sits under the viewport, as a video editor's does.
+    auto* central = new QWidget;
+    auto* centralLayout = new QVBoxLayout(central);
+    centralLayout->setContentsMargins(0, 0, 0, 0);
+    centralLayout->setSpacing(0);
+    centralLayout->addWidget(m_viewport, 1);
+    m_timelineBar = new TimelineBar(m_simulation);
+    centralLayout->addWidget(m_timelineBar);
+    setCentralWidget(central);
     m_viewport->setSimulation(m_simulation);
     m_viewport->setDocument(m_document);
     m_viewport->setDebugDrawOptions(m_debugDraw);
@@ -230,7 +241,7 @@ void MainWindow::createActions() {
         QIcon::fromTheme(QStringLiteral("edit-delete"), s->standardIcon(QStyle::SP_TrashIcon)));
     a = createAction(
         this, QStringLiteral("applyPose"), tr("Apply Simulated &Pose"), {},
-        tr("Make the bodies' current simulated positions, orientations and velocities the authored scene"));
+        tr("Make the bodies' simulated positions, orientations and velocities (of the frame shown) the authored scene"));
     connect(a, &QAction::triggered, this, &MainWindow::applySimulatedPose);
 
     // View.
@@ -304,6 +315,10 @@ void MainWindow::createActions() {
                      tr("Advance one time step and pause (.)"));
     a->setIcon(s->standardIcon(QStyle::SP_MediaSeekForward));
     connect(a, &QAction::triggered, m_simulation, &SimulationController::stepOnce);
+    a = createAction(this, QStringLiteral("stepBack"), tr("Step &Back"), Qt::Key_Comma,
+                     tr("Show the recorded frame before this one and pause (,)"));
+    a->setIcon(s->standardIcon(QStyle::SP_MediaSeekBackward));
+    connect(a, &QAction::triggered, m_simulation, &SimulationController::stepBack);
     a = createAction(this, QStringLiteral("reset"), tr("&Reset"), Qt::CTRL | Qt::Key_R,
                      tr("Return to the authored scene (Ctrl+R)"));
     a->setIcon(s->standardIcon(QStyle::SP_MediaSkipBackward));
@@ -362,6 +377,8 @@ void MainWindow::createDocks() {
     m_inspector = new InspectorPanel(m_document);
     m_settingsPanel = new SimulationSettingsPanel(m_settingsModel, m_simulation, m_debugDraw);
     m_profiler = new ProfilerPanel(m_simulation);
+    m_liveState = new LiveStatePanel(m_document, m_simulation);
+    m_liveState->watchHover(m_viewport);
     auto* history = new QUndoView(m_document->undoStack());
     history->setObjectName(QStringLiteral("historyView"));
     history->setEmptyLabel(tr("<opened>"));
@@ -372,10 +389,12 @@ void MainWindow::createDocks() {
     QDockWidget* inspector = addDock(QStringLiteral("inspectorDock"), tr("Inspector"), m_inspector, Qt::RightDockWidgetArea);
     QDockWidget* settings = addDock(QStringLiteral("settingsDock"), tr("Simulation"), m_settingsPanel, Qt::RightDockWidgetArea);
     QDockWidget* profiler = addDock(QStringLiteral("profilerDock"), tr("Profiler"), m_profiler, Qt::BottomDockWidgetArea);
+    QDockWidget* liveState = addDock(QStringLiteral("liveStateDock"), tr("Live State"), m_liveState, Qt::RightDockWidgetArea);
+    splitDockWidget(inspector, liveState, Qt::Vertical);  // before tabifying: a tab group would take it as a tab
     tabifyDockWidget(inspector, settings);
     inspector->raise();
     splitDockWidget(scene, historyDock, Qt::Vertical);
-    for (QDockWidget* dock : {scene, historyDock, inspector, settings, profiler}) {
+    for (QDockWidget* dock : {scene, historyDock, inspector, settings, profiler, liveState}) {
         dock->toggleViewAction()->setObjectName(dock->objectName() + QStringLiteral("Toggle"));
     }
     arrangeDefaultLayout();
@@ -386,10 +405,12 @@ void MainWindow::arrangeDefaultLayout() {
     auto* history = findChild<QDockWidget*>(QStringLiteral("historyDock"));
     auto* inspector = findChild<QDockWidget*>(QStringLiteral("inspectorDock"));
     auto* profiler = findChild<QDockWidget*>(QStringLiteral("profilerDock"));
+    auto* liveState = findChild<QDockWidget*>(QStringLiteral("liveStateDock"));
     for (QDockWidget* dock : findChildren<QDockWidget*>()) dock->show();
     resizeDocks({scene, inspector}, {300, 340}, Qt::Horizontal);
     resizeDocks({scene, history}, {420, 220}, Qt::Vertical);
     resizeDocks({profiler}, {200}, Qt::Vertical);
+    resizeDocks({inspector, liveState}, {460, 300}, Qt::Vertical);
 }
 
 void MainWindow::createMenusAndToolBars() {
@@ -441,6 +462,7 @@ void MainWindow::createMenusAndToolBars() {
 
     QMenu* simulation = menuBar()->addMenu(tr("&Simulation"));
     simulation->addAction(m_playAction);
+    simulation->addAction(action(QStringLiteral("stepBack")));
     simulation->addAction(action(QStringLiteral("step")));
     simulation->addAction(action(QStringLiteral("reset")));
     simulation->addSeparator();
@@ -475,6 +497,7 @@ void MainWindow::createMenusAndToolBars() {
     simulationBar->setObjectName(QStringLiteral("simulationToolBar"));
     simulationBar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
     simulationBar->addAction(m_playAction);
+    simulationBar->addAction(action(QStringLiteral("stepBack")));
     simulationBar->addAction(action(QStringLiteral("step")));
     simulationBar->addAction(action(QStringLiteral("reset")));
     auto* throwButton = new QToolButton;

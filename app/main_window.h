@@ -20,6 +20,7 @@ namespace interplay {
 class DebugDrawOptions;
 class DocumentManager;
 class InspectorPanel;
+class LiveStatePanel;
 class ProfilerPanel;
 class SceneActions;
 class SceneDocument;
@@ -27,6 +28,7 @@ class SceneTreeModel;
 class SimulationController;
 class SimulationSettingsModel;
 class SimulationSettingsPanel;
+class TimelineBar;
 class Viewport;
 
 class MainWindow : public QMainWindow {
@@ -46,6 +48,8 @@ public:
     InspectorPanel* inspector() const { return m_inspector; }
     SimulationSettingsPanel* settingsPanel() const { return m_settingsPanel; }
     ProfilerPanel* profiler() const { return m_profiler; }
+    LiveStatePanel* liveState() const { return m_liveState; }
+    TimelineBar* timelineBar() const { return m_timelineBar; }
     DebugDrawOptions* debugDrawOptions() const { return m_debugDraw; }
     QAction* action(const QString& objectName) const;  // e.g. "play", "save", "addBox"
     // The built-in scene, as at start-up without a file.
@@ -98,6 +102,8 @@ private:
     InspectorPanel* m_inspector = nullptr;
     SimulationSettingsPanel* m_settingsPanel = nullptr;
     ProfilerPanel* m_profiler = nullptr;
+    LiveStatePanel* m_liveState = nullptr;
+    TimelineBar* m_timelineBar = nullptr;
 
     QMenu* m_viewMenu = nullptr;
     QMenu* m_recentMenu = nullptr;

@@ -1,6 +1,9 @@
-// World queries: the closest-hit ray cast the editor picks with.
+// World queries: the closest-hit ray cast the editor picks with, the load on a body's contacts, and
+// copies of a world (the editor's timeline keeps them) that step on bit for bit.
 
 #include "simcore/world/world.h"
+
+#include "support/state_hash.h"
 
 #include <QtTest>
 
@@ -34,6 +37,12 @@ private slots:
     void followsMovingBodies_data();
     void followsMovingBodies();
     void removedBodiesAreNotHit();
+    void contactLoadCarriesTheWeight_data();
+    void contactLoadCarriesTheWeight();
+    void contactLoadOfAFreeBodyIsZero();
+    void kineticEnergyOfOneBody();
+    void copyStepsOnBitForBit_data();
+    void copyStepsOnBitForBit();
 };
 
 void TestWorldQueries::closestBodyAlongTheRay_data() {
@@ -106,6 +115,112 @@ void TestWorldQueries::removedBodiesAreNotHit() {
     const auto hit = world.castRay(Vec3(-5, 0, 0), Vec3(1, 0, 0), 100.0f);
     QVERIFY(hit);
     QVERIFY(hit->body == second);
+}
+
+void TestWorldQueries::contactLoadCarriesTheWeight_data() {
+    QTest::addColumn<float>("mass");
+    QTest::addColumn<int>("substeps");
+    QTest::newRow("1 kg, 4 substeps") << 1.0f << 4;
+    QTest::newRow("50 kg, 4 substeps") << 50.0f << 4;
+    QTest::newRow("3 kg, 1 substep") << 3.0f << 1;
+}
+
+// A box resting on the ground: its one manifold carries its weight, m g, at any number of substeps
+// (the ground's load counts the same manifold from the other side).
+void TestWorldQueries::contactLoadCarriesTheWeight() {
+    QFETCH(float, mass);
+    QFETCH(int, substeps);
+    WorldSettings settings;
+    settings.sleep.enabled = false;
+    settings.substeps = substeps;
+    World world(settings);
+    const BodyId ground = addBox(world, {0, -0.5f, 0}, MotionType::Static);
+    BodyCreationSettings b;
+    b.shape = Shape::box(Vec3(0.5f));
+    b.position = Vec3(0.0f, 0.5f, 0.0f);
+    b.mass = mass;
+    const BodyId box = world.createBody(b);
+    for (int i = 0; i < 120; ++i) world.step();  // 2 s: settled
+    const ContactLoad load = world.contactLoad(box);
+    QCOMPARE(load.contacts, 1);
+    const float weight = mass * glm::length(settings.gravity);
+    const float force = load.normalForce;
+    // At rest the contact holds exactly the weight; 0.5 % allows the soft contact's residual bounce.
+    QVERIFY2(std::abs(force - weight) < 0.005f * weight, qPrintable(QString("%1 N against %2 N").arg(force).arg(weight)));
+    QCOMPARE(world.contactLoad(ground).contacts, 1);
+    QCOMPARE(world.contactLoad(ground).normalForce, load.normalForce);
+}
+
+void TestWorldQueries::contactLoadOfAFreeBodyIsZero() {
+    World world(floating());
+    addBox(world, {0, 0, 0});
+    const BodyId far = addBox(world, {10, 0, 0});
+    world.step();
+    QCOMPARE(world.contactLoad(far).contacts, 0);
+    QCOMPARE(world.contactLoad(far).normalForce, 0.0f);
+    world.destroyBody(far);
+    QVERIFY_THROWS_EXCEPTION(std::out_of_range, world.contactLoad(far));
+}
+
+// A 2 kg cube of side 1 moving at (1, 2, 0) m/s and spinning at 3 rad/s: 1/2 m v^2 + 1/2 I w^2
+// with I = m a^2 / 6; the world's total is the sum over its bodies, a static one adding nothing.
+void TestWorldQueries::kineticEnergyOfOneBody() {
+    World world(floating());
+    BodyCreationSettings b;
+    b.shape = Shape::box(Vec3(0.5f));
+    b.mass = 2.0f;
+    b.linearVelocity = Vec3(1.0f, 2.0f, 0.0f);
+    b.angularVelocity = Vec3(0.0f, 0.0f, 3.0f);
+    b.orientation = glm::angleAxis(0.7f, glm::normalize(Vec3(1, 1, 0)));  // a cube's inertia is the same about any axis
+    const BodyId moving = world.createBody(b);
+    b.linearVelocity = Vec3(0.0f, 0.0f, -1.0f);
+    b.angularVelocity = Vec3(0.0f);
+    b.position = Vec3(5.0f, 0.0f, 0.0f);
+    const BodyId sliding = world.createBody(b);
+    const BodyId fixed = addBox(world, {-5, 0, 0}, MotionType::Static);
+    const double expected = 0.5 * 2.0 * 5.0 + 0.5 * (2.0 / 6.0) * 9.0;
+    QVERIFY(std::abs(world.kineticEnergy(moving) - expected) < 1e-5 * expected);
+    QVERIFY(std::abs(world.kineticEnergy(sliding) - 1.0) < 1e-6);
+    QCOMPARE(world.kineticEnergy(fixed), 0.0);
+    QCOMPARE(world.kineticEnergy(), world.kineticEnergy(moving) + world.kineticEnergy(sliding));
+}
+
+void TestWorldQueries::copyStepsOnBitForBit_data() {
+    QTest::addColumn<int>("threads");
+    QTest::newRow("1 thread") << 1;
+    QTest::newRow("3 threads") << 3;
+}
+
+// A pile of tumbling boxes: contacts, warm starts and the broad phase's tree all matter to the
+// next steps, so a copy that missed any of them would drift from the original within a few steps.
+void TestWorldQueries::copyStepsOnBitForBit() {
+    QFETCH(int, threads);
+    WorldSettings settings;
+    settings.threads = threads;
+    World original(settings);
+    addBox(original, {0, -0.5f, 0}, MotionType::Static);
+    for (int i = 0; i < 27; ++i) {
+        BodyCreationSettings b;
+        b.shape = Shape::box(Vec3(0.25f));
+        b.position = Vec3(float(i % 3) * 0.55f - 0.55f, 1.0f + float(i / 9) * 0.6f, float((i / 3) % 3) * 0.55f - 0.55f);
+        b.orientation = glm::angleAxis(0.3f * float(i), glm::normalize(Vec3(1, 2, 3)));
+        original.createBody(b);
+    }
+    for (int i = 0; i < 40; ++i) original.step();
+    QVERIFY(original.contactCount() > 0);
+    World copy(original);
+    QCOMPARE(test_support::stateHash(copy), test_support::stateHash(original));
+    QCOMPARE(copy.stepCount(), original.stepCount());
+    World assigned;
+    assigned = copy;
+    for (int i = 0; i < 80; ++i) {
+        original.step();
+        copy.step();
+        assigned.step();
+        QCOMPARE(test_support::stateHash(copy), test_support::stateHash(original));
+        QCOMPARE(test_support::stateHash(assigned), test_support::stateHash(original));
+    }
+    QCOMPARE(copy.contactCount(), original.contactCount());
 }
 
 QTEST_APPLESS_MAIN(TestWorldQueries)

@@ -72,6 +72,7 @@ bool SimulationController::build(simcore::Scene scene, QString* error) {
     m_history.clear();
     m_boundWarned = false;
     m_rebuildBeforeRun = false;
+    discardRecording();
     emit worldRebuilt();
     return true;
 }
@@ -311,6 +312,7 @@ bool SimulationController::applySettings(const simcore::WorldSettings& settings,
         return false;
     }
     m_scene.settings = settings;
+    discardRecording();
     return true;
 }
 
@@ -339,7 +341,18 @@ void SimulationController::togglePlaying() {
 
 void SimulationController::stepOnce() {
     pause();
+    const int frame = currentFrame();
+    if (frame >= 0 && frame + 1 < static_cast<int>(m_timeline.frameCount())) {
+        showFrame(frame + 1);
+        return;
+    }
     stepFrames(1);
+}
+
+void SimulationController::stepBack() {
+    pause();
+    const int frame = currentFrame();
+    if (frame > 0) showFrame(frame - 1);
 }
 
 void SimulationController::stepFrames(int frames) {
@@ -394,14 +407,20 @@ simcore::BodyId SimulationController::spawn(const simcore::SceneBody& body, QStr
     }
     m_bodyIds.push_back(id);
     m_colors.push_back(body.color);
+    // Thrown at a frame shown before the newest, the body starts a new future; the next frame
+    // cannot be stepped to from the last keyframe.
+    const int frame = currentFrame();
+    if (frame >= 0) m_timeline.truncateAfter(static_cast<std::size_t>(frame));
+    m_changedSinceFrame = true;
     emit bodySpawned(id);
+    emit timelineChanged();
     return id;
 }
 
-void SimulationController::applyGrabForce() {
-    simcore::World& world = m_built->world;
-    if (!m_grab || !world.contains(m_grab->body)) return;
-    if (world.motionType(m_grab->body) != simcore::MotionType::Dynamic) return;
+std::optional<AppliedForce> SimulationController::grabForce() const {
+    const simcore::World& world = m_built->world;
+    if (!m_grab || !world.contains(m_grab->body)) return std::nullopt;
+    if (world.motionType(m_grab->body) != simcore::MotionType::Dynamic) return std::nullopt;
     const simcore::BodyId id = m_grab->body;
     const simcore::Vec3 center = world.centerOfMass(id);
     const simcore::Vec3 point = world.position(id) + world.orientation(id) * m_grab->localPoint;
@@ -414,9 +433,7 @@ void SimulationController::applyGrabForce() {
     const float magnitude = glm::length(acceleration);
     if (magnitude > kMaxGrabAcceleration) acceleration *= kMaxGrabAcceleration / magnitude;
     const simcore::Vec3 force = world.mass(id) * acceleration;
-    world.addForce(id, force);
-    world.addTorque(id, glm::cross(lever, force));
-    world.wake(id);
+    return AppliedForce{id, force, glm::cross(lever, force)};
 }
 
 void SimulationController::tick() {
@@ -439,9 +456,12 @@ void SimulationController::tick() {
 
 bool SimulationController::advance(int steps) {
     simcore::World& world = m_built->world;
+    prepareRecording();
     for (int i = 0; i < steps; ++i) {
-        applyGrabForce();  // forces last one step in simcore
+        const std::optional<AppliedForce> grab = grabForce();  // forces last one step in simcore
+        if (grab) applyForce(world, *grab);
         world.step();
+        recordStep(grab);
         m_history.push_back({world.simulatedTime(), world.lastStepProfile(), world.kineticEnergy(), world.potentialEnergy()});
         if (m_history.size() > kHistoryLength) m_history.pop_front();
         if (!m_boundWarned && world.lastStepProfile().counters.boundedVelocities > 0) {
@@ -452,6 +472,7 @@ bool SimulationController::advance(int steps) {
                    "(a joint torn far apart, a violent overlap) get there; more substeps or a smaller time step help."));
         }
     }
+    if (m_recording) emit timelineChanged();
     // Checked once per batch, not per step: enough to stop playback before garbage spreads.
     if (const auto bad = world.findNonFiniteBody()) {
         pause();
@@ -461,6 +482,83 @@ bool SimulationController::advance(int steps) {
         return false;
     }
     return true;
+}
+
+void SimulationController::setRecording(bool recording) {
+    if (recording == m_recording) return;
+    m_recording = recording;
+    discardRecording();
+}
+
+void SimulationController::setRecordingMemoryLimit(std::size_t bytes) {
+    m_timeline.setMemoryLimit(bytes);
+    emit timelineChanged();
+}
+
+int SimulationController::currentFrame() const {
+    // Frames are consecutive steps, and the world is always at one of them while any is recorded:
+    // whatever changes it otherwise discards or cuts the recording.
+    if (!m_built || m_timeline.empty()) return -1;
+    const std::uint64_t step = m_built->world.stepCount();
+    const std::uint64_t first = m_timeline.stepOf(0);
+    if (step < first || step - first >= m_timeline.frameCount()) return -1;
+    return static_cast<int>(step - first);
+}
+
+bool SimulationController::showFrame(int frame) {
+    if (!m_built || frame < 0 || frame >= static_cast<int>(m_timeline.frameCount())) return false;
+    pause();
+    const std::size_t bodiesBefore = m_built->world.bodyCount();
+    m_built->world = m_timeline.restore(static_cast<std::size_t>(frame));
+    m_grab.reset();
+    m_changedSinceFrame = false;
+    // Bodies thrown in later keep their ids (a later frame has them again); views skip them here.
+    if (m_built->world.bodyCount() != bodiesBefore) emit bodiesEdited();
+    emit stepped();
+    emit timelineChanged();
+    return true;
+}
+
+double SimulationController::recordingMs() const {
+    if (m_recordingMs.empty()) return 0.0;
+    double sum = 0.0;
+    for (double ms : m_recordingMs) sum += ms;
+    return sum / static_cast<double>(m_recordingMs.size());
+}
+
+void SimulationController::prepareRecording() {
+    if (!m_recording) return;
+    const int frame = currentFrame();
+    if (frame < 0) {
+        m_timeline.clear();
+        m_timeline.record(m_built->world, std::nullopt, true, m_bodyIds.size());
+        return;
+    }
+    if (frame + 1 == static_cast<int>(m_timeline.frameCount())) return;
+    // Resuming from a frame shown: the future recorded after it is dropped, and so are the ids of
+    // the bodies thrown in there (a new throw may reuse their slots).
+    m_timeline.truncateAfter(static_cast<std::size_t>(frame));
+    const std::size_t tracked = m_timeline.trackedBodiesOf(static_cast<std::size_t>(frame));
+    if (tracked < m_bodyIds.size()) {
+        m_bodyIds.resize(tracked);
+        m_colors.resize(tracked);
+        emit bodiesEdited();
+    }
+}
+
+void SimulationController::recordStep(const std::optional<AppliedForce>& input) {
+    if (!m_recording) return;
+    QElapsedTimer timer;
+    timer.start();
+    m_timeline.record(m_built->world, input, std::exchange(m_changedSinceFrame, false), m_bodyIds.size());
+    m_recordingMs.push_back(static_cast<double>(timer.nsecsElapsed()) * 1e-6);
+    if (m_recordingMs.size() > kHistoryLength) m_recordingMs.pop_front();
+}
+
+void SimulationController::discardRecording() {
+    m_timeline.clear();
+    m_changedSinceFrame = false;
+    emit timelineChanged();
 }
 
 void SimulationController::followDocument(const SceneDocument* document) {
@@ -492,6 +590,7 @@ void SimulationController::followDocument(const SceneDocument* document) {
 }
 
 void SimulationController::follow(const SceneDocument* document, const std::function<bool(QString* error)>& edit) {
+    discardRecording();  // the frames were of the scene before the edit
     QString error;
     if (edit(&error)) return;
     QString rebuildError;

@@ -26,8 +26,17 @@
 // moved is rebuilt from the authored scene before its first step (the order of bodies and joints
 // and the broad phase's fat boxes would differ from a fresh build's), so a run from an edited
 // scene is bit for bit the run of that scene saved and reopened.
+//
+// The timeline (app/simulation/timeline.h): while recording (the default), every step is kept in a
+// ring bounded by a memory limit. Showing a frame puts the running world back exactly as it was at
+// that step, paused: the viewport and the panels show it, Apply Simulated Pose applies it, and Step
+// goes on through the recorded frames. Playing from a frame shown (or stepping past the newest)
+// resumes from it and drops the frames after it, as recording over a tape does; a resumed run is
+// the recorded run bit for bit while nobody pulls or throws. An edit of the scene or its settings,
+// Reset and a new scene discard the recording: its frames were of another scene.
 
 #include "app/document/scene_document.h"
+#include "app/simulation/timeline.h"
 
 #include "simcore/io/scene.h"
 #include "simcore/world/profiler.h"
@@ -136,6 +145,18 @@ public:
     const std::deque<StepSample>& history() const { return m_history; }
     static constexpr std::size_t kHistoryLength = 600;
 
+    // ---- The timeline (see the top of this file) ----
+    const Timeline& timeline() const { return m_timeline; }
+    bool isRecording() const { return m_recording; }
+    void setRecording(bool recording);  // off discards the recording
+    void setRecordingMemoryLimit(std::size_t bytes);
+    // The recorded frame the world is at, or -1 (nothing recorded).
+    int currentFrame() const;
+    // Puts the world back at recorded frame `frame`, paused. False when it is not recorded.
+    bool showFrame(int frame);
+    // Mean time a step's recording took over the last kHistoryLength recorded steps (ms).
+    double recordingMs() const;
+
     // Real-time catch-up limit: after a stall (debugger, slow frame) at most this many steps run
     // per tick and the rest of the backlog is dropped, so the loop never spirals.
     static constexpr int kMaxCatchUpSteps = 8;
@@ -145,7 +166,10 @@ public slots:
     void pause();
     void setPlaying(bool playing);
     void togglePlaying();
+    // One step on; at a frame shown before the newest, the next recorded frame.
     void stepOnce();
+    // The recorded frame before the one the world is at (paused); nothing before the first.
+    void stepBack();
     // Advances exactly `frames` steps (used by --screenshot and tests); emits stepped() once.
     void stepFrames(int frames);
     // Back to the authored scene, paused.
@@ -166,6 +190,7 @@ signals:
     // summary fits a status bar; the details say why and what helps.
     void simulationWarning(const QString& summary, const QString& details);
     void editFailed(const QString& message);       // a followed edit could be neither applied nor rebuilt from
+    void timelineChanged();  // frames recorded, dropped or discarded, or another frame shown
 
 private:
     struct Grab {
@@ -176,7 +201,14 @@ private:
 
     void tick();
     bool advance(int steps);  // false when the world went non-finite
-    void applyGrabForce();
+    // The grab spring's force for the next step, if a body is grabbed.
+    std::optional<AppliedForce> grabForce() const;
+    // Records the world's state after a step that `input` acted over (nothing while not recording);
+    // at a frame shown before the newest, first drops the frames after it.
+    void recordStep(const std::optional<AppliedForce>& input);
+    // Before stepping: starts the recording with the state to step from, or cuts the future.
+    void prepareRecording();
+    void discardRecording();
     bool build(simcore::Scene scene, QString* error);  // replaces the world; playing or not stays as it is
     // A world edited in place before it ran is rebuilt (see the top of this file).
     void rebuildIfEditedBeforeRun();
@@ -206,6 +238,10 @@ private:
     std::optional<Grab> m_grab;
     std::deque<StepSample> m_history;
     bool m_boundWarned = false;  // simulationWarning sent for this world
+    Timeline m_timeline;
+    bool m_recording = true;
+    bool m_changedSinceFrame = false;  // the world was changed between steps since the last frame
+    std::deque<double> m_recordingMs;  // the last steps' recording times
 
     QTimer m_timer;
     QElapsedTimer m_clock;

@@ -18,7 +18,7 @@ World::World(const WorldSettings& settings) { setSettings(settings); }
 
 void World::setSettings(const WorldSettings& settings) {
     validateSettings(settings);
-    if (!pool_ || settings.threads != settings_.threads) pool_ = std::make_unique<TaskPool>(settings.threads);
+    if (!threads_.configured() || settings.threads != settings_.threads) threads_.configure(settings.threads);
     settings_ = settings;
     if (!settings_.effects[Effect::Sleeping] || !settings_.sleep.enabled) {
         for (std::size_t i = 0; i < bodies_.size(); ++i) wakeIndex(i);
@@ -149,13 +149,13 @@ void World::step() {
     planSolve(plan, profile.skipped);
     for (int substep = 0; substep < settings_.substeps; ++substep) {
         run(Stage::IntegrateVelocities, [&] {
-            profile.counters.boundedVelocities += integrator_.integrateVelocities(bodies_, settings_.integrator, plan.velocity, h, *pool_);
+            profile.counters.boundedVelocities += integrator_.integrateVelocities(bodies_, settings_.integrator, plan.velocity, h, threads_.pool());
         });
         if (substep == 0) run(Stage::Restitution, [&] { contactSolver_.resolveCollisions(bodies_, ContactSolver::ImpactTiming::BeforePositions); });
         run(Stage::WarmStart, [&] { warmStart(plan); });
         run(Stage::Solve, [&] { solveVelocities(plan); });
         run(Stage::IntegratePositions, [&] {
-            profile.counters.boundedVelocities += integrator_.integratePositions(bodies_, settings_.integrator, h, *pool_);
+            profile.counters.boundedVelocities += integrator_.integratePositions(bodies_, settings_.integrator, h, threads_.pool());
         });
         // Before relax, which would slow a body about to hit down to the speed that just closes the
         // gap (speculative contact) and so take away the impact the bounce needs.
@@ -245,7 +245,7 @@ void World::prepareConstraints(const StepPlan& plan) {
         params.gravity = plan.velocity.gravity;
         params.solver = settings_.solver;
         params.contact = settings_.contact;
-        contactSolver_.prepare(contactManager_.contacts(), bodies_, params, *pool_);
+        contactSolver_.prepare(contactManager_.contacts(), bodies_, params, threads_.pool());
     }
     if (plan.joints) jointSolver_.prepare(joints_, bodies_, {plan.substepDt, settings_.joint});
     // The poses continuous collision sweeps from (it runs only with contacts, so only with this stage).
@@ -341,7 +341,7 @@ std::size_t World::updateBroadPhase(float dt) {
 }
 
 void World::updateContacts() {
-    contactManager_.updateManifolds(bodies_, broadPhase_, settings_.contact.speculativeDistance, settings_.timeStep, *pool_);
+    contactManager_.updateManifolds(bodies_, broadPhase_, settings_.contact.speculativeDistance, settings_.timeStep, threads_.pool());
 }
 
 void World::recordSweepStarts() {

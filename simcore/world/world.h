@@ -53,6 +53,44 @@ struct ContactInfo {
     Vec3 frictionImpulse{0.0f};                              // N s, accumulated, in the contact plane
 };
 
+// The contacts touching one body and what they carry (ContactInfo summed over the body's manifolds).
+struct ContactLoad {
+    int contacts = 0;          // touching manifolds (at least one point) with other bodies
+    float normalForce = 0.0f;  // N: their points' normal impulses over the last substep, per second
+};
+
+// The world's worker threads. A copied world gets a pool of its own with as many threads, made
+// when it first steps: a copy kept as a snapshot holds no threads.
+class WorldThreads {
+public:
+    WorldThreads() = default;
+    WorldThreads(const WorldThreads& other) : threads_(other.threads_) {}
+    WorldThreads& operator=(const WorldThreads& other) {
+        if (this != &other) {
+            threads_ = other.threads_;
+            pool_.reset();
+        }
+        return *this;
+    }
+    WorldThreads(WorldThreads&&) noexcept = default;
+    WorldThreads& operator=(WorldThreads&&) noexcept = default;
+
+    bool configured() const { return threads_.has_value(); }
+    int threads() const { return threads_.value_or(1); }
+    void configure(int threads) {
+        threads_ = threads;
+        pool_.reset();
+    }
+    TaskPool& pool() const {
+        if (!pool_) pool_ = std::make_unique<TaskPool>(threads());
+        return *pool_;
+    }
+
+private:
+    std::optional<int> threads_;                 // settings.threads (0: one per core)
+    mutable std::unique_ptr<TaskPool> pool_;
+};
+
 struct NonFiniteBody {
     BodyId id;
     std::string name;
@@ -62,6 +100,12 @@ struct NonFiniteBody {
 class World {
 public:
     explicit World(const WorldSettings& settings = {});
+    // A copy holds the whole state (bodies, contacts with their warm starts, joints, the broad
+    // phase's tree, sleep timers, counters), so stepping it gives the bits the original would.
+    World(const World&) = default;
+    World& operator=(const World&) = default;
+    World(World&&) noexcept = default;
+    World& operator=(World&&) noexcept = default;
 
     const WorldSettings& settings() const { return settings_; }
     void setSettings(const WorldSettings& settings);  // throws std::invalid_argument naming the bad field
@@ -169,6 +213,7 @@ public:
 
     // Energies of dynamic bodies (J); potential is relative to the origin along gravity.
     double kineticEnergy() const;
+    double kineticEnergy(BodyId id) const;  // of one body (J): translation and rotation; 0 unless dynamic
     double potentialEnergy() const;
     Vec3 linearMomentum() const;
     Vec3 angularMomentum() const;  // about the world origin
@@ -191,6 +236,9 @@ public:
     // contacts come and go.
     std::size_t contactCount() const { return contactManager_.contacts().size(); }
     ContactInfo contact(std::size_t index) const;
+    // The touching contacts between `id` and other bodies, and the normal force they carry. The
+    // accumulated impulses are those of the last substep, so they are divided by its length.
+    ContactLoad contactLoad(BodyId id) const;
 
 private:
     // The one way past the public API: tests inject faults (a NaN, as an engine bug would leave
@@ -232,6 +280,7 @@ private:
     bool sweepFastBodies();
     void setAwake(std::size_t i, bool awake);
     void countEffect(Effect effect) { ++effectUsage_.stepsRun[static_cast<int>(effect)]; }
+    double kineticEnergyAt(std::size_t i) const;  // body at dense index i (J)
     std::size_t indexOf(BodyId id) const;  // dense index; throws std::out_of_range for a stale id
     std::size_t indexOf(JointId id) const;
     void buildIslandsAndWake();            // islands over contacts and joints; touched islands wake
@@ -252,7 +301,7 @@ private:
     static void applyDistanceLengths(Joint& joint);
 
     WorldSettings settings_;
-    std::unique_ptr<TaskPool> pool_;  // settings_.threads threads; a pointer so the world stays movable
+    WorldThreads threads_;  // settings_.threads threads
     BodyStorage bodies_;
     BodyIntegrator integrator_;
     BroadPhase broadPhase_;

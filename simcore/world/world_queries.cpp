@@ -85,17 +85,34 @@ ContactInfo World::contact(std::size_t index) const {
     return info;
 }
 
+ContactLoad World::contactLoad(BodyId id) const {
+    indexOf(id);  // throws for a stale id
+    const std::uint32_t slot = id.index;
+    float impulse = 0.0f;  // N s
+    ContactLoad load;
+    for (const Contact& c : contactManager_.contacts()) {
+        if ((c.slotA != slot && c.slotB != slot) || c.manifold.pointCount == 0) continue;
+        ++load.contacts;
+        for (int k = 0; k < c.manifold.pointCount; ++k) impulse += c.impulses[k].normal;
+    }
+    load.normalForce = impulse * static_cast<float>(settings_.substeps) / settings_.timeStep;
+    return load;
+}
+
+double World::kineticEnergyAt(std::size_t i) const {
+    if (bodies_.motion[i] != MotionType::Dynamic) return 0.0;
+    const Vec3& v = bodies_.linearVelocity[i];
+    const Vec3& w = bodies_.angularVelocity[i];
+    const Mat3 r = glm::mat3_cast(bodies_.orientation[i]);
+    const Vec3 wLocal = glm::transpose(r) * w;
+    return 0.5 * bodies_.mass[i] * glm::dot(v, v) + 0.5 * glm::dot(wLocal, bodies_.inertiaLocal[i] * wLocal);
+}
+
+double World::kineticEnergy(BodyId id) const { return kineticEnergyAt(indexOf(id)); }
+
 double World::kineticEnergy() const {
     double energy = 0.0;
-    for (std::size_t i = 0; i < bodies_.size(); ++i) {
-        if (bodies_.motion[i] != MotionType::Dynamic) continue;
-        const Vec3& v = bodies_.linearVelocity[i];
-        const Vec3& w = bodies_.angularVelocity[i];
-        const Mat3 r = glm::mat3_cast(bodies_.orientation[i]);
-        const Vec3 wLocal = glm::transpose(r) * w;
-        energy += 0.5 * bodies_.mass[i] * glm::dot(v, v) +
-                  0.5 * glm::dot(wLocal, bodies_.inertiaLocal[i] * wLocal);
-    }
+    for (std::size_t i = 0; i < bodies_.size(); ++i) energy += kineticEnergyAt(i);
     return energy;
 }
 
