@@ -244,7 +244,9 @@ void TestEditorGizmo::ctrlSnapsToTheSettingsSteps() {
              qPrintable(QStringLiteral("moved %1 m").arg(moved)));
     QVERIFY2(std::abs(moved - 0.93f) <= 0.5f * grid + 2.0f * metresPerPixel(), qPrintable(QString::number(moved)));
 
-    // Turning, 37° swept: a whole number of angle steps, the nearest one.
+    // Turning, 33° swept: a whole number of angle steps, the nearest one. 33° lies 2° or more from
+    // every rounding boundary of either step (22.5, 37.5; 25, 35), more than a pixel's worth of
+    // angle on the ring (85 px: 0.7°).
     QTest::keyClick(viewport(), Qt::Key_E);
     viewport()->grabViewport();
     const glm::quat startOrientation = document()->body(sphere).body.orientation;
@@ -255,7 +257,7 @@ void TestEditorGizmo::ctrlSnapsToTheSettingsSteps() {
     QTest::mousePress(viewport(), Qt::LeftButton, Qt::ControlModifier, from);
     QPoint to = from;
     for (int step = 1; step <= 8; ++step) {
-        to = pixelOf(p.center + glm::angleAxis(glm::radians(37.0f * step / 8.0f), glm::vec3(0.0f, 1.0f, 0.0f)) * arm);
+        to = pixelOf(p.center + glm::angleAxis(glm::radians(33.0f * step / 8.0f), glm::vec3(0.0f, 1.0f, 0.0f)) * arm);
         QMouseEvent move(QEvent::MouseMove, to, viewport()->mapToGlobal(to), Qt::NoButton, Qt::LeftButton,
                          Qt::ControlModifier);
         QApplication::sendEvent(viewport(), &move);
@@ -263,7 +265,7 @@ void TestEditorGizmo::ctrlSnapsToTheSettingsSteps() {
     QTest::mouseRelease(viewport(), Qt::LeftButton, Qt::ControlModifier, to);
     const glm::quat turn = document()->body(sphere).body.orientation * glm::inverse(startOrientation);
     const float degrees = glm::degrees(glm::angle(turn));
-    QVERIFY2(std::abs(degrees - angle * std::round(37.0f / angle)) < 0.01f, qPrintable(QString::number(degrees)));
+    QVERIFY2(std::abs(degrees - angle * std::round(33.0f / angle)) < 0.01f, qPrintable(QString::number(degrees)));
     QCOMPARE(document()->undoStack()->count(), 2);  // one entry per gesture
 }
 
