@@ -53,6 +53,12 @@ void validateShapeAt(const Shape& shape, const std::string& path) {
             }
             break;
         }
+        case ShapeType::Mesh:
+            require(shape.mesh != nullptr, path + " has no triangle mesh");
+            break;
+        case ShapeType::HeightField:
+            require(shape.heightField != nullptr, path + " has no height field");
+            break;
     }
 }
 
@@ -87,6 +93,9 @@ void validateBody(const BodyCreationSettings& s) {
 }
 
 MassProperties bodyMassProperties(const Shape& shape, MotionType motion, std::optional<float> mass, float density) {
+    require(motion != MotionType::Dynamic || !isSurface(shape.type),
+            "a " + std::string(shapeTypeName(shape.type)) +
+                " body must be static or kinematic: for a moving body use a convexHull or a compound of convex shapes");
     if (motion != MotionType::Dynamic) {
         MassProperties centreOnly;
         centreOnly.centerOfMass = massProperties(shape, 1.0f).centerOfMass;
