@@ -322,6 +322,31 @@ private slots:
         for (int i = 0; i < 120; ++i) world.step();
         QVERIFY(std::abs(world.position(ball).y - 0.2f) < 0.01f);
     }
+
+    // The demo scene: rocks and crates dropped on a height field end above it, each body's centre
+    // above the terrain found by a ray from high above (the ray skips the body itself by starting
+    // below its top and looking for the terrain).
+    void terrainDemoSceneKeepsBodiesAboveTheSurface() {
+        const SceneLoadResult loaded = loadSceneFile(INTERPLAY_SOURCE_DIR "/scenes/terrain_rocks.json");
+        QVERIFY(loaded.ok());
+        World world(loaded.scene->settings);
+        std::vector<BodyId> ids;
+        for (const SceneBody& b : loaded.scene->bodies) ids.push_back(world.createBody(b.body));
+        for (int i = 0; i < 300; ++i) world.step();
+        const BodyId terrain = ids.front();
+        const Shape& field = world.shape(terrain);
+        const Transform fieldPose{world.position(terrain), world.orientation(terrain)};
+        int checked = 0;
+        for (std::size_t i = 1; i < ids.size(); ++i) {
+            const Vec3 centre = world.position(ids[i]);
+            const Vec3 local = fieldPose.applyInverse(centre);
+            const auto below = field.heightField->rayCast(Vec3(local.x, 100.0f, local.z), Vec3(0.0f, -200.0f, 0.0f));
+            if (!below) continue;  // rolled off the edge of the field
+            ++checked;
+            QVERIFY2(local.y > below->point.y, loaded.scene->bodies[i].body.name.c_str());
+        }
+        QVERIFY(checked >= 28);  // nearly all of the 32 stay on the terrain
+    }
 };
 
 QTEST_GUILESS_MAIN(TestMeshBodies)
