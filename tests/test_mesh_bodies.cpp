@@ -4,6 +4,7 @@
 // the triangle, and dynamic surfaces refused.
 
 #include "simcore/io/scene_io.h"
+#include "simcore/shapes/compound_shape.h"
 #include "simcore/shapes/height_field.h"
 #include "simcore/shapes/triangle_mesh.h"
 #include "simcore/world/world.h"
@@ -246,6 +247,34 @@ private slots:
         // see docs/architecture.md, "Static meshes and height fields").
         QVERIFY(onField.lastSecondMove < 0.02f);
         QVERIFY(onMesh.lastSecondMove < 0.02f);
+    }
+
+    // A compound lies on a mesh on both its children: each child gets its own contacts with the
+    // triangles under it (sub-shape pairs), and the body rests level at one radius.
+    void compoundRestsOnMeshOnEveryChild() {
+        World world;
+        const BodyId ground = world.createBody(staticBody(Shape::triangleMesh(flatGrid(4, 2.0f))));
+        const float radius = 0.2f;
+        BodyCreationSettings dumbbell;
+        dumbbell.shape = Shape::compoundOf(std::make_shared<const CompoundShape>(std::vector<CompoundChild>{
+            {Shape::sphere(radius), Transform{Vec3(-0.5f, 0.0f, 0.0f), Quat(1, 0, 0, 0)}},
+            {Shape::sphere(radius), Transform{Vec3(0.5f, 0.0f, 0.0f), Quat(1, 0, 0, 0)}},
+            {Shape::capsule(0.05f, 0.5f), Transform{Vec3(0.0f), glm::angleAxis(0.5f * kPi, Vec3(0, 0, 1))}}}));
+        dumbbell.position = Vec3(0.3f, 0.6f, 0.7f);  // over a seam, the bells on different triangles
+        const BodyId id = world.createBody(dumbbell);
+        for (int i = 0; i < 120; ++i) world.step();
+        QVERIFY(std::abs(world.position(id).y - radius) < 0.005f);
+        QVERIFY(std::abs((world.orientation(id) * Vec3(1, 0, 0)).y) < 0.01f);  // level
+        bool touching[3] = {};
+        for (std::size_t c = 0; c < world.contactCount(); ++c) {
+            const ContactInfo contact = world.contact(c);
+            if (contact.pointCount == 0) continue;
+            const bool dumbbellIsA = contact.bodyA == id;
+            QCOMPARE(dumbbellIsA ? contact.bodyB : contact.bodyA, ground);
+            touching[dumbbellIsA ? contact.subShapeA : contact.subShapeB] = true;
+        }
+        QVERIFY(touching[0] && touching[1]);
+        QVERIFY(!touching[2]);  // the bar is 0.15 m up
     }
 
     // A ray straight down finds the triangle under it, on a mesh moved and turned in the world.

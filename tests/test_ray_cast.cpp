@@ -412,6 +412,9 @@ Shape randomShape(std::mt19937& rng) {
             for (int i = 0; i < 24; ++i) points.push_back(stretch * Vec3(gauss(rng), gauss(rng), gauss(rng)));
             return Shape::convexHull(buildHull(points));
         }
+        case ShapeType::Compound:
+        case ShapeType::Mesh:
+        case ShapeType::HeightField: break;  // kind covers the convex types only
     }
     return Shape::sphere(1.0f);
 }
