@@ -25,6 +25,7 @@
 #include <optional>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
@@ -329,6 +330,11 @@ BulletScene buildBullet(const simcore::Scene& scene, BuildNotes& notes) {
             collisionShape = out.world->addShape(std::move(hull));
             break;
         }
+        case simcore::ShapeType::Compound:
+        case simcore::ShapeType::Mesh:
+        case simcore::ShapeType::HeightField:
+            throw std::runtime_error("the Bullet comparison does not build " +
+                                     std::string(simcore::shapeTypeName(shape.type)) + " shapes (body " + b.name + ")");
         }
 
         if (dynamic && shape.type != simcore::ShapeType::ConvexHull) {

@@ -4,17 +4,22 @@
 // the TriangleMesh of its samples; 1000 boxes (0.5 m, random orientation) placed on it, 0-10 cm
 // deep. Times per box: the midphase query of the box's bounds (plus the speculative margin), and
 // the query with collideTriangleConvex on every triangle it returns, best of several repeats.
-//   interplay-bench-mesh [REPEATS]   (default 20)
+// Then whole worlds: 1000 such boxes dropped on the terrain as each of the two, and on a box floor,
+// stepped for STEPS steps (ms per step, and how many bodies ended with their centre below the
+// surface, which must be none).
+//   interplay-bench-mesh [REPEATS [STEPS]]   (defaults 20 and 300)
 
 #include "simcore/collision/collide_mesh.h"
 #include "simcore/shapes/height_field.h"
 #include "simcore/shapes/triangle_mesh.h"
+#include "simcore/world/world.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <random>
 #include <vector>
 
@@ -80,10 +85,45 @@ void print(const char* name, const Totals& t, std::size_t boxes) {
                 double(t.manifolds) / double(boxes), double(t.points) / double(boxes));
 }
 
+// 1000 boxes dropped from 1.5 m over the ground (a 32 x 32 grid, 3 m apart, over the 100 m
+// square), stepped `steps` times. surfaceBelow(x, z) is the ground's height there.
+template <class SurfaceHeight>
+void dropBoxes(const char* name, const Shape& ground, const Vec3& groundPosition, SurfaceHeight surfaceBelow, int steps) {
+    World world;
+    BodyCreationSettings floor;
+    floor.motion = MotionType::Static;
+    floor.shape = ground;
+    floor.position = groundPosition;
+    world.createBody(floor);
+    std::vector<BodyId> boxes;
+    for (int i = 0; i < 32 && boxes.size() < std::size_t(kBoxes); ++i)
+        for (int k = 0; k < 32 && boxes.size() < std::size_t(kBoxes); ++k) {
+            BodyCreationSettings b;
+            b.shape = Shape::box(Vec3(0.5f));
+            const float x = 3.0f + 3.0f * float(i), z = 3.0f + 3.0f * float(k);
+            b.position = Vec3(x, surfaceBelow(x, z) + 1.5f, z);
+            b.orientation = glm::angleAxis(0.1f * float(i * 32 + k), glm::normalize(Vec3(1.0f, 2.0f, 3.0f)));
+            boxes.push_back(world.createBody(b));
+        }
+    // Process CPU time (one thread: the default), so other work on a shared machine does not count.
+    const std::clock_t start = std::clock();
+    for (int s = 0; s < steps; ++s) world.step();
+    const double ms = 1000.0 * double(std::clock() - start) / CLOCKS_PER_SEC;
+    int below = 0, asleep = 0;
+    for (BodyId id : boxes) {
+        const Vec3 p = world.position(id);
+        if (p.y < surfaceBelow(p.x, p.z)) ++below;
+        if (!world.isAwake(id)) ++asleep;
+    }
+    std::printf("%-12s %zu boxes, %d steps: %7.3f ms/step (CPU); centres below the surface %d; asleep at the end %d\n", name,
+                boxes.size(), steps, ms / double(steps), below, asleep);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     const int repeats = argc > 1 ? std::max(1, std::atoi(argv[1])) : 20;
+    const int steps = argc > 2 ? std::max(1, std::atoi(argv[2])) : 300;
     std::vector<float> heights;
     for (int r = 0; r < kSamples; ++r)
         for (int c = 0; c < kSamples; ++c)
@@ -120,5 +160,14 @@ int main(int argc, char** argv) {
                 INTERPLAY_BUILD_TYPE, mesh->triangleCount(), kBoxes, repeats);
     print("heightField", run(*field, box, poses, repeats), poses.size());
     print("mesh", run(*mesh, box, poses, repeats), poses.size());
+
+    const auto terrainHeight = [&](float x, float z) {
+        const auto under = field->rayCast(Vec3(x, 100.0f, z), Vec3(0.0f, -200.0f, 0.0f));
+        return under ? under->point.y : -1e9f;
+    };
+    dropBoxes("heightField", Shape::heightFieldOf(field), Vec3(0.0f), terrainHeight, steps);
+    dropBoxes("mesh", Shape::triangleMesh(mesh), Vec3(0.0f), terrainHeight, steps);
+    dropBoxes("box floor", Shape::box(Vec3(50.0f, 0.5f, 50.0f)), Vec3(50.0f, -0.5f, 50.0f),
+              [](float, float) { return 0.0f; }, steps);
     return 0;
 }

@@ -538,6 +538,38 @@ def table_and_dumbbells():
     return scene(settings(), bodies)
 
 
+def terrain_rocks():
+    """A static height-field terrain (33 x 33 samples 0.75 m apart: 2048 triangles of rolling hills
+    and a valley) with 16 convex-hull rocks and 16 crates dropped on it from 2 to 4 m. The rocks
+    roll and slide down into the valley; the crates settle where they land. The field's origin is
+    its corner, so the body is placed at -12 m to centre it."""
+    rows = columns = 33
+    cell = 0.75
+    heights = []
+    for r in range(rows):
+        for c in range(columns):
+            x, z = c * cell - 12.0, r * cell - 12.0
+            valley = -1.2 * math.exp(-((x - 2.0) ** 2 + (z + 1.0) ** 2) / 18.0)
+            hills = 0.7 * math.sin(0.35 * x) * math.cos(0.3 * z) + 0.04 * (x + z)
+            heights.append(round(hills + valley, 4))
+    bodies = [{"name": "terrain (height field)", "motion": "static",
+               "shape": {"type": "heightField", "rows": rows, "columns": columns, "cellSize": cell,
+                         "heightScale": 1, "heights": heights},
+               "position": [-12, 0, -12], "friction": 0.7, "restitution": 0, "color": [0.42, 0.5, 0.32]}]
+    rng = Lcg(1717)
+    for i in range(16):
+        x, z = rng.uniform(-8, 8), rng.uniform(-8, 8)
+        shape = hull(rock_points(rng, rng.uniform(0.3, 0.6), rng.uniform(0.25, 0.45), rng.uniform(0.3, 0.6)))
+        bodies.append(body("rock %d" % (i + 1), shape, [round(x, 3), round(rng.uniform(2.5, 4.0), 3), round(z, 3)],
+                           density=2600, friction=0.8, color=[0.5, 0.47, 0.43]))
+    for i in range(16):
+        x, z = rng.uniform(-8, 8), rng.uniform(-8, 8)
+        q = quat_axis_angle((0, 1, 0), rng.uniform(0, math.pi))
+        bodies.append(body("crate %d" % (i + 1), box(0.3, 0.3, 0.3), [round(x, 3), round(rng.uniform(2.0, 3.5), 3), round(z, 3)],
+                           orientation=q, density=500, friction=0.6, color=hsv(0.08 + 0.02 * (i % 4))))
+    return scene(settings(), bodies)
+
+
 def dominoes():
     """32 dominoes (half extents 0.05 x 0.5 x 0.25: 0.1 thick, 1 high, 0.5 wide) 0.55 m apart along
     a path: 8 straight along +x, a half circle of radius 2.2, then back along -x. Each stands upright,
@@ -737,6 +769,7 @@ def all_scenes():
         "heavy_on_light.json": heavy_on_light(),
         "dominoes.json": dominoes(),
         "table_and_dumbbells.json": table_and_dumbbells(),
+        "terrain_rocks.json": terrain_rocks(),
         "chain20.json": chain20(),
         "hinge_door.json": hinge_door(),
         "ragdoll.json": ragdoll(),

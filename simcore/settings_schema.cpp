@@ -245,7 +245,7 @@ constexpr PropertyInfo kProperties[] = {
     {P::Body, "rollingResistance", L::kRollingResistance, "coefficient of rolling resistance (default 0)"},
     {P::Body, "ccd", std::nullopt, "continuous collision: sweep the body so it does not tunnel"},
     {P::Body, "color", L::kColor, "linear RGB for the viewer"},
-    {P::Shape, "type", std::nullopt, "box, sphere, capsule, cylinder, convexHull or compound"},
+    {P::Shape, "type", std::nullopt, "box, sphere, capsule, cylinder, convexHull, compound, mesh or heightField"},
     {P::Box, "halfExtents", L::kSize, "half the box's size along each axis"},
     {P::Sphere, "radius", L::kSize, "the sphere's radius"},
     {P::Capsule, "radius", L::kSize, "radius of the capsule's caps and body"},
@@ -254,6 +254,13 @@ constexpr PropertyInfo kProperties[] = {
     {P::Cylinder, "halfHeight", L::kSize, "half the cylinder's height, along local Y"},
     {P::ConvexHull, "points", L::kCoordinate, "4 to 4096 points spanning a volume, in the body frame"},
     {P::Compound, "children", std::nullopt, "1 to 64 convex child shapes, each placed in the body frame"},
+    {P::Mesh, "vertices", L::kCoordinate, "vertex positions [x, y, z] in the body frame"},
+    {P::Mesh, "triangles", std::nullopt, "vertex index triples [i, j, k], counter-clockwise seen from the front; 1 to 2 000 000"},
+    {P::HeightField, "rows", L::kHeightFieldSamples, "samples along +z (at least 2)"},
+    {P::HeightField, "columns", L::kHeightFieldSamples, "samples along +x (at least 2)"},
+    {P::HeightField, "cellSize", L::kSize, "distance between neighbouring samples"},
+    {P::HeightField, "heightScale", L::kSize, "factor on every height (default 1)"},
+    {P::HeightField, "heights", L::kCoordinate, "rows x columns heights, row by row, before heightScale"},
     {P::CompoundChild, "shape", std::nullopt, "the child's shape: any convex shape (compounds do not nest)"},
     {P::CompoundChild, "position", L::kCoordinate, "the child's origin in the body frame (default 0)"},
     {P::CompoundChild, "orientation", L::kQuaternionComponent, "unit quaternion [w, x, y, z] in the body frame"},
@@ -286,7 +293,7 @@ constexpr PropertyInfo kProperties[] = {
 };
 
 bool isShapeType(PropertyOwner owner) {
-    return owner >= P::Box && owner <= P::Compound;
+    return owner >= P::Box && owner <= P::HeightField;
 }
 bool isJointType(PropertyOwner owner) {
     return owner >= P::Hinge;
@@ -318,6 +325,8 @@ std::string_view propertyOwnerName(PropertyOwner owner) {
         case P::Cylinder: return "cylinder";
         case P::ConvexHull: return "convexHull";
         case P::Compound: return "compound";
+        case P::Mesh: return "mesh";
+        case P::HeightField: return "heightField";
         case P::CompoundChild: return "compoundChild";
         case P::Joint: return "joint";
         case P::Hinge: return "hinge";

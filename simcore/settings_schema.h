@@ -64,6 +64,12 @@ inline constexpr std::size_t kMaxHullPoints = 4096;
 // A compound's children: the mid-phase scans them as a list, and a pair of compounds can hold a
 // contact per pair of children (64 x 64 at most).
 inline constexpr std::size_t kMaxCompoundChildren = 64;
+// Static surfaces: a hostile file cannot exhaust memory, and a 1e6 m coordinate keeps float
+// precision where the rest of a scene keeps it. A height field's triangles are 2 (rows - 1)(columns - 1).
+inline constexpr std::size_t kMaxMeshTriangles = 2'000'000;
+inline constexpr std::size_t kMaxMeshVertices = 3 * kMaxMeshTriangles;
+inline constexpr int kMaxHeightFieldSamples = 1'000'001;  // per side; the triangle limit binds first
+inline constexpr NumberRange kHeightFieldSamples{2, kMaxHeightFieldSamples};
 }  // namespace limits
 
 // ---- world settings ----
@@ -104,10 +110,11 @@ const SettingInfo* findSetting(std::string_view key);  // null for an unknown ke
 // What a property belongs to. Each joint type's and shape type's keys come on top of the
 // common ones (Joint, Shape). CompoundChild is one entry of a compound's "children".
 enum class PropertyOwner {
-    Body, Shape, Box, Sphere, Capsule, Cylinder, ConvexHull, Compound, CompoundChild, Joint, Hinge, Slider, Distance
+    Body, Shape, Box, Sphere, Capsule, Cylinder, ConvexHull, Compound, Mesh, HeightField, CompoundChild, Joint, Hinge,
+    Slider, Distance
 };
 
-// "body", "shape", "box", ..., "compound", "compoundChild", "joint", "hinge", "slider", "distance": qualifies a key in docs and
+// "body", "shape", "box", ..., "compound", "mesh", "heightField", "compoundChild", "joint", "hinge", "slider", "distance": qualifies a key in docs and
 // tests ("hinge.limits.lower").
 std::string_view propertyOwnerName(PropertyOwner owner);
 

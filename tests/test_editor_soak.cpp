@@ -97,7 +97,10 @@ Shape randomShape(Random& random) {
     case ShapeType::Box: return Shape::box(random.vec(0.05f, 0.8f));
     case ShapeType::Capsule: return Shape::capsule(random.uniform(0.1f, 0.5f), random.uniform(0.05f, 0.8f));
     case ShapeType::Cylinder: return Shape::cylinder(random.uniform(0.1f, 0.6f), random.uniform(0.05f, 0.8f));
-    case ShapeType::ConvexHull: break;
+    case ShapeType::ConvexHull:
+    case ShapeType::Compound:
+    case ShapeType::Mesh:
+    case ShapeType::HeightField: break;  // the draw covers the convex types only: a hull below
     }
     const Vec3 size = random.vec(0.15f, 0.8f);
     for (;;) {  // a random cloud is flat only by a freak chance: draw again

@@ -52,6 +52,9 @@ Shape scaled(const Shape& s, float k) {
             for (Vec3& p : points) p *= k;
             return Shape::convexHull(buildHull(points));
         }
+        case ShapeType::Compound:
+        case ShapeType::Mesh:
+        case ShapeType::HeightField: break;  // not convex: GJK never sees them
     }
     return s;
 }
@@ -533,6 +536,9 @@ FuzzPair extremePair(std::mt19937& rng) {
             case ShapeType::Capsule: return Shape::capsule(squash(), squash());
             case ShapeType::Cylinder: return Shape::cylinder(squash(), squash());
             case ShapeType::ConvexHull: return scaled(s, squash());
+            case ShapeType::Compound:
+            case ShapeType::Mesh:
+            case ShapeType::HeightField: break;  // randomShape makes convex shapes only
         }
         return s;
     };

@@ -123,6 +123,44 @@ private:
             {"error at /bodies/0/shape/children/0/shape/type: ", "compounds do not nest"});
         row("compound without children", v1(body(R"({"type": "compound", "children": []})")),
             {"error at /bodies/0/shape/children: a compound has 1 to 64 children, got 0"});
+        row("dynamic mesh", v1(body(R"({"type": "mesh", "vertices": [[0,0,0], [1,0,0], [0,0,1]], "triangles": [[0,2,1]]})")),
+            {"error at /bodies/0/motion: a mesh body must be static or kinematic", "convexHull", "compound"});
+        row("dynamic height field", v1(body(R"({"type": "heightField", "rows": 2, "columns": 2, "cellSize": 1, "heights": [0,0,0,0]})")),
+            {"error at /bodies/0/motion: a heightField body must be static or kinematic"});
+        row("mesh index out of range", v1(body(R"({"type": "mesh", "vertices": [[0,0,0], [1,0,0], [0,0,1]], "triangles": [[0,2,3]]})",
+                                                R"("motion": "static")")),
+            {"error at /bodies/0/shape/triangles: cannot build the mesh: ", "triangle 0"});
+        row("mesh degenerate triangle", v1(body(R"({"type": "mesh", "vertices": [[0,0,0], [1,0,0], [2,0,0]], "triangles": [[0,1,2]]})",
+                                                 R"("motion": "static")")),
+            {"error at /bodies/0/shape/triangles: cannot build the mesh: ", "triangle 0"});
+        row("mesh triangle of two", v1(body(R"({"type": "mesh", "vertices": [[0,0,0], [1,0,0], [0,0,1]], "triangles": [[0,2]]})",
+                                             R"("motion": "static")")),
+            {"error at /bodies/0/shape/triangles/0: expected 3 vertex indices [i, j, k], got 2 items"});
+        row("mesh negative index", v1(body(R"({"type": "mesh", "vertices": [[0,0,0], [1,0,0], [0,0,1]], "triangles": [[0,-2,1]]})",
+                                            R"("motion": "static")")),
+            {"error at /bodies/0/shape/triangles/0/1: "});
+        row("mesh vertex out of range", v1(body(R"({"type": "mesh", "vertices": [[0,0,0], [1e7,0,0], [0,0,1]], "triangles": [[0,2,1]]})",
+                                                 R"("motion": "static")")),
+            {"error at /bodies/0/shape/vertices/1/0: vertices[1][0] must be between -1000000 and 1000000 m"});
+        row("mesh without triangles", v1(body(R"({"type": "mesh", "vertices": [[0,0,0]]})", R"("motion": "static")")),
+            {"error at /bodies/0/shape/triangles: required key"});
+        row("mesh in a compound", v1(body(R"({"type": "compound", "children": [{"shape": {"type": "mesh"}}]})")),
+            {"error at /bodies/0/shape/children/0/shape/type: a compound's child must be a convex shape, not a mesh"});
+        row("height field short of heights", v1(body(R"({"type": "heightField", "rows": 2, "columns": 3, "cellSize": 1, "heights": [0,0,0,0]})",
+                                                      R"("motion": "static")")),
+            {"error at /bodies/0/shape/heights: expected rows x columns = 6 heights, got 4"});
+        row("height field of one row", v1(body(R"({"type": "heightField", "rows": 1, "columns": 3, "cellSize": 1, "heights": [0,0,0]})",
+                                                R"("motion": "static")")),
+            {"error at /bodies/0/shape/rows: "});
+        row("height field zero cell", v1(body(R"({"type": "heightField", "rows": 2, "columns": 2, "cellSize": 0, "heights": [0,0,0,0]})",
+                                               R"("motion": "static")")),
+            {"error at /bodies/0/shape/cellSize: "});
+        row("height field too many triangles", v1(body(R"({"type": "heightField", "rows": 1001, "columns": 1002, "cellSize": 1, "heights": []})",
+                                                        R"("motion": "static")")),
+            {"error at /bodies/0/shape: a height field may have at most 2000000 triangles"});
+        row("height field NaN-like height", v1(body(R"({"type": "heightField", "rows": 2, "columns": 2, "cellSize": 1, "heights": [0,0,"x",0]})",
+                                                     R"("motion": "static")")),
+            {"error at /bodies/0/shape/heights/2: expected a number, got a string"});
 
         // Body properties.
         row("mass zero", v1(body(kSphere, R"("mass": 0)")), {"error at /bodies/0/mass: mass must be positive, got 0"});

@@ -63,6 +63,9 @@ bool contains(const Shape& shape, const Transform& t, const Vec3& world) {
                 if (glm::dot(f.normal, p) > f.offset) return false;
             }
             return true;
+        case ShapeType::Compound:
+        case ShapeType::Mesh:
+        case ShapeType::HeightField: break;  // not convex: cast in test_compound and test_mesh_bodies
     }
     return false;
 }
@@ -409,6 +412,9 @@ Shape randomShape(std::mt19937& rng) {
             for (int i = 0; i < 24; ++i) points.push_back(stretch * Vec3(gauss(rng), gauss(rng), gauss(rng)));
             return Shape::convexHull(buildHull(points));
         }
+        case ShapeType::Compound:
+        case ShapeType::Mesh:
+        case ShapeType::HeightField: break;  // kind covers the convex types only
     }
     return Shape::sphere(1.0f);
 }

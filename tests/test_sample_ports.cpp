@@ -161,6 +161,9 @@ Vec3 halfExtentsOf(const Shape& shape) {
         case ShapeType::Sphere: return Vec3(shape.radius);
         case ShapeType::Capsule: return Vec3(shape.radius, shape.radius + shape.halfHeight, shape.radius);
         case ShapeType::Cylinder: return Vec3(shape.radius, shape.halfHeight, shape.radius);
+        case ShapeType::Compound:
+        case ShapeType::Mesh:
+        case ShapeType::HeightField: break;  // the ported samples use convex shapes only
     }
     return Vec3(0.0f);
 }
@@ -183,6 +186,9 @@ float tunnelMargin(const Shape& shape) {
             inscribed = shape.hull->faces().front().offset;
             for (const HullFace& f : shape.hull->faces()) inscribed = std::min(inscribed, f.offset);
             break;
+        case ShapeType::Compound:
+        case ShapeType::Mesh:
+        case ShapeType::HeightField: break;  // the ported samples use convex shapes only
     }
     return 0.5f * inscribed;
 }

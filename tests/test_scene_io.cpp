@@ -72,6 +72,32 @@ void compareScenes(const Scene& a, const Scene& b) {
                 for (std::size_t k = 0; k < px.size(); ++k) QVERIFY(sameBits(px[k], py[k]));
                 break;
             }
+            case ShapeType::Compound: {
+                QVERIFY(x.shape.compound && y.shape.compound);
+                QCOMPARE(x.shape.compound->size(), y.shape.compound->size());
+                break;
+            }
+            case ShapeType::Mesh: {
+                QVERIFY(x.shape.mesh && y.shape.mesh);
+                const auto& vx = x.shape.mesh->vertices();
+                const auto& vy = y.shape.mesh->vertices();
+                QCOMPARE(vx.size(), vy.size());
+                for (std::size_t k = 0; k < vx.size(); ++k) QVERIFY(sameBits(vx[k], vy[k]));
+                QVERIFY(x.shape.mesh->triangleIndices() == y.shape.mesh->triangleIndices());
+                break;
+            }
+            case ShapeType::HeightField: {
+                QVERIFY(x.shape.heightField && y.shape.heightField);
+                QCOMPARE(x.shape.heightField->rows(), y.shape.heightField->rows());
+                QCOMPARE(x.shape.heightField->columns(), y.shape.heightField->columns());
+                QVERIFY(sameBits(x.shape.heightField->cellSize(), y.shape.heightField->cellSize()));
+                QVERIFY(sameBits(x.shape.heightField->heightScale(), y.shape.heightField->heightScale()));
+                const auto& hx = x.shape.heightField->heights();
+                const auto& hy = y.shape.heightField->heights();
+                QCOMPARE(hx.size(), hy.size());
+                for (std::size_t k = 0; k < hx.size(); ++k) QVERIFY(sameBits(hx[k], hy[k]));
+                break;
+            }
         }
         QVERIFY(sameBits(x.position, y.position));
         QVERIFY(sameBits(x.orientation, y.orientation));

@@ -341,9 +341,12 @@ void TestSettingsSchema::inspectorFieldsUseTheSchemaRanges() {
                        QString::fromLatin1(p.key.data(), static_cast<qsizetype>(p.key.size()));
     }
     // What the Inspector edits otherwise: the orientation as Euler angles, the colour in a colour
-    // dialog; hull points and a compound's children (listed read-only) are not edited.
-    const QSet<QString> notNumberFields{"body.orientation", "body.color", "convexHull.points",
-                                        "compoundChild.position", "compoundChild.orientation"};
+    // dialog; hull points, a compound's children (listed read-only) and a surface's samples are not
+    // edited.
+    const QSet<QString> notNumberFields{"body.orientation",     "body.color",          "convexHull.points",
+                                        "compoundChild.position", "compoundChild.orientation", "mesh.vertices",
+                                        "heightField.rows",      "heightField.columns", "heightField.cellSize",
+                                        "heightField.heightScale", "heightField.heights"};
     QCOMPARE(edited, numeric - notNumberFields);
     QVERIFY(numeric.contains(notNumberFields));
 

@@ -125,6 +125,9 @@ PointCloud surfaceSamples(const Shape& shape) {
     case ShapeType::ConvexHull:
         samples = shape.hull->vertices();
         break;
+    case ShapeType::Compound:
+    case ShapeType::Mesh:
+    case ShapeType::HeightField: break;  // not convex: these tests pass convex shapes only
     }
     return samples;
 }
@@ -141,6 +144,9 @@ float supportFunction(const Shape& shape, const Vec3& d) {
         for (const Vec3& v : shape.hull->sourcePoints()) best = std::max(best, glm::dot(v, d));
         return best;
     }
+    case ShapeType::Compound:
+    case ShapeType::Mesh:
+    case ShapeType::HeightField: break;  // not convex: these tests pass convex shapes only
     }
     return 0.0f;
 }

@@ -70,6 +70,9 @@ float surfaceDistance(const Shape& s, const Vec3& p) {
         for (const auto& f : s.hull->faces()) d = std::max(d, glm::dot(f.normal, p) - f.offset);
         return d;
     }
+    case simcore::ShapeType::Compound:
+    case simcore::ShapeType::Mesh:
+    case simcore::ShapeType::HeightField: break;  // the mesh tests here build convex shapes only
     }
     return 1e30f;
 }

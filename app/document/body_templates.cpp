@@ -5,6 +5,7 @@
 #include <QCoreApplication>
 
 #include <stdexcept>
+#include <string>
 
 namespace interplay {
 namespace {
@@ -32,6 +33,9 @@ simcore::Vec3 templateColor(simcore::ShapeType type) {
     case simcore::ShapeType::Capsule: return {0.90f, 0.55f, 0.05f};
     case simcore::ShapeType::Cylinder: return {0.35f, 0.20f, 0.70f};
     case simcore::ShapeType::ConvexHull: return {0.25f, 0.55f, 0.25f};
+    case simcore::ShapeType::Compound:
+    case simcore::ShapeType::Mesh:
+    case simcore::ShapeType::HeightField: break;  // no template (see templateShape)
     }
     return {0.5f, 0.5f, 0.5f};
 }
@@ -45,8 +49,12 @@ simcore::Shape templateShape(simcore::ShapeType type) {
     case simcore::ShapeType::Capsule: return simcore::Shape::capsule(0.3f, 0.4f);
     case simcore::ShapeType::Cylinder: return simcore::Shape::cylinder(0.45f, 0.4f);
     case simcore::ShapeType::ConvexHull: return simcore::Shape::convexHull(rockHull());
+    case simcore::ShapeType::Compound:
+    case simcore::ShapeType::Mesh:
+    case simcore::ShapeType::HeightField: break;
     }
-    return simcore::Shape::sphere(0.5f);
+    throw std::invalid_argument("no template shape for a " + std::string(simcore::shapeTypeName(type)) +
+                                " (the Add menus offer the convex types)");
 }
 
 simcore::SceneBody templateBody(simcore::ShapeType type, const QString& name, const simcore::Vec3& position) {
@@ -107,6 +115,9 @@ QString shapeDisplayName(simcore::ShapeType type) {
     case simcore::ShapeType::Capsule: return QCoreApplication::translate("interplay::shapes", "Capsule");
     case simcore::ShapeType::Cylinder: return QCoreApplication::translate("interplay::shapes", "Cylinder");
     case simcore::ShapeType::ConvexHull: return QCoreApplication::translate("interplay::shapes", "Hull");
+    case simcore::ShapeType::Compound: return QCoreApplication::translate("interplay::shapes", "Compound");
+    case simcore::ShapeType::Mesh: return QCoreApplication::translate("interplay::shapes", "Mesh");
+    case simcore::ShapeType::HeightField: return QCoreApplication::translate("interplay::shapes", "Height field");
     }
     return {};
 }

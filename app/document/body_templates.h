@@ -11,7 +11,8 @@
 
 namespace interplay {
 
-// The default shape of a type. The convex hull is a fixed, irregular ten-point rock.
+// The default shape of a convex type (isConvex: what the Add menus offer); the convex hull is a
+// fixed, irregular ten-point rock. Throws std::invalid_argument for the other types.
 simcore::Shape templateShape(simcore::ShapeType type);
 
 // A dynamic body of that shape at `position`, named `name`, with a palette colour.

@@ -54,7 +54,9 @@ void BodyBatches::rebuild(const SimulationController& simulation,
         draw.id = ids[i];
         draw.sceneIndex = static_cast<int>(i) < authored ? static_cast<int>(i) : -1;
         draw.color = displayColor(i, authoredColor, world->motionType(ids[i]));
-        for (std::size_t sub = 0; sub < simcore::subShapeCount(shape); ++sub) {
+        // A compound is drawn child by child; a surface is one mesh of all its triangles.
+        const std::size_t parts = shape.type == simcore::ShapeType::Compound ? simcore::subShapeCount(shape) : 1;
+        for (std::size_t sub = 0; sub < parts; ++sub) {
             const simcore::Shape& piece = simcore::subShape(shape, sub);
             PartDraw part;
             part.mesh = meshFor(piece);

@@ -161,12 +161,17 @@ int Renderer::meshFor(const simcore::Shape& shape) {
         std::get<5>(key) = shape.halfHeight;
         break;
     case simcore::ShapeType::ConvexHull: std::get<6>(key) = shape.hull.get(); break;
+    case simcore::ShapeType::Compound: break;  // drawn child by child (body_batches.h)
+    case simcore::ShapeType::Mesh: std::get<6>(key) = shape.mesh.get(); break;
+    case simcore::ShapeType::HeightField: std::get<6>(key) = shape.heightField.get(); break;
     }
     if (const auto it = m_meshIndex.find(key); it != m_meshIndex.end()) return it->second;
 
     const ShapeMesh mesh = buildShapeMesh(shape);
     GpuMesh gpu;
-    gpu.hull = shape.hull;
+    gpu.shared = shape.hull ? std::shared_ptr<const void>(shape.hull)
+                : shape.mesh ? std::shared_ptr<const void>(shape.mesh)
+                             : std::shared_ptr<const void>(shape.heightField);
     gpu.indexCount = static_cast<int>(mesh.indices.size());
     glGenVertexArrays(1, &gpu.vao);
     glGenBuffers(1, &gpu.vbo);

@@ -81,9 +81,9 @@ private:
     struct GpuMesh {
         unsigned vao = 0, vbo = 0, ibo = 0;
         int indexCount = 0;
-        // Keeps a hull alive while its address is part of a cache key, so the address cannot be
-        // reused by another hull.
-        std::shared_ptr<const simcore::ConvexHull> hull;
+        // Keeps a hull, mesh or height field alive while its address is part of a cache key, so
+        // the address cannot be reused by another.
+        std::shared_ptr<const void> shared;
     };
     using MeshKey = std::tuple<int, float, float, float, float, float, const void*>;
 

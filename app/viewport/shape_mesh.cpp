@@ -138,6 +138,24 @@ ShapeMesh hullMesh(const simcore::ConvexHull& hull) {
     return mesh;
 }
 
+// A surface's triangles with their face normals; three vertices each, since neighbours may crease.
+ShapeMesh surfaceMesh(const simcore::Shape& shape) {
+    ShapeMesh mesh;
+    const std::size_t count = simcore::subShapeCount(shape);
+    mesh.vertices.reserve(3 * count);
+    mesh.indices.reserve(3 * count);
+    simcore::visitSurface(shape, [&](const auto& surface) {
+        for (std::uint32_t t = 0; t < count; ++t) {
+            const simcore::Triangle triangle = surface.triangle(t);
+            for (const simcore::Vec3& v : triangle.vertices) {
+                mesh.indices.push_back(static_cast<std::uint32_t>(mesh.vertices.size()));
+                mesh.vertices.push_back({v, triangle.normal});
+            }
+        }
+    });
+    return mesh;
+}
+
 }  // namespace
 
 ShapeMesh buildShapeMesh(const simcore::Shape& shape, const MeshDetail& detail) {
@@ -148,6 +166,8 @@ ShapeMesh buildShapeMesh(const simcore::Shape& shape, const MeshDetail& detail) 
     case simcore::ShapeType::Cylinder: return cylinderMesh(shape.radius, shape.halfHeight, detail);
     case simcore::ShapeType::ConvexHull: return shape.hull ? hullMesh(*shape.hull) : ShapeMesh{};
     case simcore::ShapeType::Compound: break;  // drawn child by child (body_batches.h)
+    case simcore::ShapeType::Mesh: return shape.mesh ? surfaceMesh(shape) : ShapeMesh{};
+    case simcore::ShapeType::HeightField: return shape.heightField ? surfaceMesh(shape) : ShapeMesh{};
     }
     return {};
 }

@@ -29,8 +29,9 @@ struct MeshDetail {
     int stacks = 20;  // latitude bands from pole to pole (spheres); half as many per capsule cap
 };
 
-// Convex shapes only: a compound is drawn as its children's meshes (body_batches.h), so equal
-// children share one; it gets an empty mesh here.
+// Convex shapes and surfaces (a mesh's or height field's triangles, each with its face normal, so
+// the terrain is drawn faceted with the same look as hulls). A compound is drawn as its children's
+// meshes (body_batches.h), so equal children share one; it gets an empty mesh here.
 ShapeMesh buildShapeMesh(const simcore::Shape& shape, const MeshDetail& detail = {});
 
 }  // namespace interplay

@@ -178,7 +178,10 @@ void findBestAxis(const Setup& setup, const Shape& shape, const Transform& t, Ax
                 edgePair(e, axis, t.position - axis, t.position + axis, -1);
                 break;
             }
-            case ShapeType::Sphere: break;
+            case ShapeType::Sphere:
+            case ShapeType::Compound:
+            case ShapeType::Mesh:
+            case ShapeType::HeightField: break;  // no edges (or not convex: never passed here)
         }
         if (faceBest.separation > setup.separatedBeyond) {
             best = faceBest;
@@ -380,6 +383,9 @@ void incidentFeature(const Setup& setup, const Shape& shape, const Transform& t,
             return;
         }
         case ShapeType::Sphere: out.add(t.position, 0); return;
+        case ShapeType::Compound:
+        case ShapeType::Mesh:
+        case ShapeType::HeightField: return;  // not convex: collided sub-shape by sub-shape
     }
 }
 

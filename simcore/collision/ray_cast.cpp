@@ -211,6 +211,22 @@ std::optional<RayCastHit> rayCastShape(const Shape& shape, const Transform& tran
         }
         return nearest;
     }
+    if (isSurface(shape.type)) {
+        // The surface's own nearest-triangle cast in its frame; a rotation keeps the direction's
+        // length, so the fraction is the same in both frames. Two-sided: picking finds it from below.
+        if (!isFinite(ray.origin) || !isFinite(ray.direction) || !(ray.maxFraction >= 0.0f)) return std::nullopt;
+        const std::optional<SurfaceRayHit> hit = visitSurface(shape, [&](const auto& surface) {
+            return surface.rayCast(transform.applyInverse(ray.origin), transform.rotateInverse(ray.direction),
+                                   ray.maxFraction);
+        });
+        if (!hit) return std::nullopt;
+        RayCastHit result;
+        result.fraction = hit->fraction;
+        result.point = ray.origin + hit->fraction * ray.direction;
+        result.normal = transform.rotate(hit->normal);
+        result.subShape = hit->triangle;
+        return result;
+    }
     if (!isFinite(ray.origin) || !isFinite(ray.direction) || !(ray.maxFraction >= 0.0f)) return std::nullopt;
 
     // Length computed on the direction scaled by its largest component, so that neither tiny nor
@@ -238,7 +254,9 @@ std::optional<RayCastHit> rayCastShape(const Shape& shape, const Transform& tran
         case ShapeType::ConvexHull:
             if (shape.hull) hit = castHull(local, *shape.hull);
             break;
-        case ShapeType::Compound: break;  // cast child by child above
+        case ShapeType::Compound:
+        case ShapeType::Mesh:
+        case ShapeType::HeightField: break;  // cast above
     }
     if (!hit) return std::nullopt;
 

@@ -34,7 +34,7 @@ struct RayCastHit {
     float fraction = 0.0f;  // t of the entry point, in [0, maxFraction]
     Vec3 point{0.0f};       // world frame, origin + fraction * direction
     Vec3 normal{0.0f};      // world frame, unit, outward at the hit (dot(normal, direction) <= 0)
-    std::uint32_t subShape = 0;  // the sub-shape hit (shape.h): a compound's child, 0 for a convex shape
+    std::uint32_t subShape = 0;  // the sub-shape hit (shape.h): a compound's child, a surface's triangle, 0 for a convex shape
 };
 
 // First point where the ray enters `shape` placed by `transform`, or nothing.

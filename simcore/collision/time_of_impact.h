@@ -4,7 +4,9 @@
 // since no point of either moves faster along n than its linear speed plus spin times reach; so
 // time can safely advance by d / (that bound). Repeating converges on the first contact from
 // outside and never steps past it, however thin the shapes or fast the motion. A compound is
-// swept child by child (each child pair in turn; the earliest hit counts).
+// swept child by child (each child pair in turn; the earliest hit counts). Against a surface (mesh
+// or height field), taken at rest at its sweep's start, each sub-shape is advanced towards each
+// triangle its swept box meets, with the triangle narrow phase's separation as the distance.
 
 #include "simcore/math/math.h"
 #include "simcore/shapes/shape.h"

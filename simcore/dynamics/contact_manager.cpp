@@ -1,9 +1,11 @@
 #include "simcore/dynamics/contact_manager.h"
 
+#include "simcore/collision/collide_mesh.h"
 #include "simcore/collision/collide_shapes.h"
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace simcore {
 
@@ -62,8 +64,8 @@ void combineMaterials(Contact& contact, const BodyStorage& bodies, std::size_t a
         bodies.rollingResistance[b], rollingRadius(subShape(bodies.shape[b], contact.subShapeB)));
 }
 
-// Whether a body collides through its sub-shapes one pair at a time (a compound); a convex shape
-// is its own single sub-shape and collides whole.
+// Whether a body collides through its sub-shapes one pair at a time (a compound's children, a
+// surface's triangles); a convex shape is its own single sub-shape and collides whole.
 bool hasSeveralSubShapes(const Shape& shape) { return !isConvex(shape.type); }
 
 bool isAwakeDynamic(const BodyStorage& bodies, std::size_t i) {
@@ -88,26 +90,30 @@ Aabb grown(Aabb box, float margin) {
     return box;
 }
 
+// Triangle `sub` of surface body i, in the world.
+Triangle surfaceTriangle(const BodyStorage& bodies, std::size_t i, std::uint32_t sub) {
+    return visitSurface(bodies.shape[i], [&](const auto& surface) { return surface.triangle(sub); })
+        .placed(bodies.transform(i));
+}
+
 // A sub-shape's tight world bounds; a convex body's are the body's, already current this step.
 Aabb subShapeWorldBounds(const BodyStorage& bodies, std::size_t i, std::uint32_t sub) {
     const Shape& shape = bodies.shape[i];
     if (!hasSeveralSubShapes(shape)) return bodies.bounds[i];
+    if (isSurface(shape.type)) {
+        Aabb bounds;
+        for (const Vec3& v : surfaceTriangle(bodies, i, sub).vertices) bounds.grow(v);
+        return bounds;
+    }
     return worldBounds(subShape(shape, sub), subShapeTransform(shape, sub, bodies.transform(i)));
 }
 
-// The world box `box` seen from the frame `transform`: the bounds of its corners there.
-Aabb boundsInFrame(const Aabb& box, const Transform& transform) {
-    const Mat3 toLocal = glm::transpose(glm::mat3_cast(transform.rotation));
-    const Vec3 half = box.halfExtents();
-    Vec3 localHalf(0.0f);
-    for (int j = 0; j < 3; ++j) localHalf += glm::abs(toLocal[j]) * half[j];
-    return Aabb::fromCenterHalfExtents(toLocal * (box.center() - transform.position), localHalf);
-}
-
-// Calls visit(sub) for each sub-shape of body i whose tight world bounds overlap `box`, in index
-// order. A compound's children are few (limits::kMaxCompoundChildren): a scan of their bounds in
-// the body frame against the box brought into that frame beats a tree, and skips computing the
-// world bounds of children that are far (a child that reaches into the box passes both tests).
+// Calls visit(sub) for each sub-shape of body i whose tight world bounds overlap `box`. A
+// compound's children are few (limits::kMaxCompoundChildren): a scan of their bounds in the body
+// frame against the box brought into that frame beats a tree, and skips computing the world bounds
+// of children that are far (a child that reaches into the box passes both tests); they come in
+// index order. A surface's triangles come from its own mid-phase (a BVH, or a height field's grid)
+// queried in its frame, in that structure's fixed order.
 template <class Visit>
 void forEachSubShapeOverlapping(const BodyStorage& bodies, std::size_t i, const Aabb& box, Visit visit) {
     const Shape& shape = bodies.shape[i];
@@ -116,6 +122,14 @@ void forEachSubShapeOverlapping(const BodyStorage& bodies, std::size_t i, const 
         return;
     }
     const Aabb local = boundsInFrame(box, bodies.transform(i));
+    if (isSurface(shape.type)) {
+        visitSurface(shape, [&](const auto& surface) {
+            surface.forEachTriangleOverlapping(local, [&](std::uint32_t triangle) {
+                if (subShapeWorldBounds(bodies, i, triangle).overlaps(box)) visit(triangle);
+            });
+        });
+        return;
+    }
     const auto count = static_cast<std::uint32_t>(subShapeCount(shape));
     for (std::uint32_t sub = 0; sub < count; ++sub)
         if (subShapeLocalBounds(shape, sub).overlaps(local) && subShapeWorldBounds(bodies, i, sub).overlaps(box))
@@ -124,6 +138,30 @@ void forEachSubShapeOverlapping(const BodyStorage& bodies, std::size_t i, const 
 
 std::uint64_t subShapePairKey(std::uint32_t subShapeA, std::uint32_t subShapeB) {
     return (std::uint64_t(subShapeA) << 32) | subShapeB;
+}
+
+// The manifold of sub-shape subA of body a against sub-shape subB of body b, normal from a to b.
+// A surface's sub-shape is a triangle, collided with collideTriangleConvex (normal from the
+// triangle); two surfaces never meet (neither is dynamic, so they get no contact).
+void collideSubShapes(const BodyStorage& bodies, std::size_t a, std::uint32_t subA, std::size_t b, std::uint32_t subB,
+                      float margin, ContactManifold& manifold) {
+    const Shape& shapeA = bodies.shape[a];
+    const Shape& shapeB = bodies.shape[b];
+    if (isSurface(shapeA.type)) {
+        collideTriangleConvex(surfaceTriangle(bodies, a, subA), subShape(shapeB, subB),
+                              subShapeTransform(shapeB, subB, bodies.transform(b)), margin, manifold);
+        return;
+    }
+    if (isSurface(shapeB.type)) {
+        collideTriangleConvex(surfaceTriangle(bodies, b, subB), subShape(shapeA, subA),
+                              subShapeTransform(shapeA, subA, bodies.transform(a)), margin, manifold);
+        // Seen from a: the normal turns round and the points swap sides; separations stay.
+        manifold.normal = -manifold.normal;
+        for (int p = 0; p < manifold.pointCount; ++p) std::swap(manifold.points[p].pointA, manifold.points[p].pointB);
+        return;
+    }
+    collideShapes(subShape(shapeA, subA), subShapeTransform(shapeA, subA, bodies.transform(a)), subShape(shapeB, subB),
+                  subShapeTransform(shapeB, subB, bodies.transform(b)), margin, manifold);
 }
 
 // The narrow phase for one contact; false when it is to go: its bodies' fat boxes no longer
@@ -148,12 +186,8 @@ bool refreshManifold(Contact& contact, const BodyStorage& bodies, const BroadPha
         return true;
     }
 
-    const Shape& shapeA = bodies.shape[a];
-    const Shape& shapeB = bodies.shape[b];
     ContactManifold manifold;
-    collideShapes(subShape(shapeA, contact.subShapeA), subShapeTransform(shapeA, contact.subShapeA, bodies.transform(a)),
-                  subShape(shapeB, contact.subShapeB), subShapeTransform(shapeB, contact.subShapeB, bodies.transform(b)),
-                  margin, manifold);
+    collideSubShapes(bodies, a, contact.subShapeA, b, contact.subShapeB, margin, manifold);
 
     contact.impulses = matchImpulses(contact.manifold, contact.impulses, manifold);
     contact.manifold = manifold;

@@ -15,6 +15,9 @@
 //    reported) like a body's, at its own path ("/bodies/3/shape/children/1/shape/radius"); a
 //    compound child is refused (no nesting). A child's position defaults to 0, its orientation to
 //    identity, read like a body's.
+//  - meshes: inline "vertices" and "triangles" (TriangleMesh::build's checks, its message at the
+//    triangles' path); height fields: "rows" x "columns" "heights" (HeightField::build's checks).
+//    Both on static and kinematic bodies only: a dynamic one is an error at its "motion".
 //  - what a dynamic body's values come to together (both formats): the mass a density gives
 //    (density x volume) within the mass range; the smallest principal moment of inertia at least
 //    1e-30 kg m^2 (its inverse must stay inside float range).
@@ -38,6 +41,7 @@
 #include "simcore/io/scene_v1.h"
 #include "simcore/shapes/compound_shape.h"
 #include "simcore/world/quality_preset.h"
+#include "simcore/world/validation.h"
 
 #include <algorithm>
 #include <cctype>
@@ -182,6 +186,102 @@ std::optional<Shape> readCompound(Reader& r, const Json& j, const std::string& p
     return Shape::compoundOf(std::make_shared<const CompoundShape>(std::move(parts)));
 }
 
+// An array at `key` of at most `limit` items, each read by readItem(item, itemPath) -> optional<T>;
+// nothing (and reported) when missing, too long or any item is bad.
+template <class T, class ReadItem>
+std::optional<std::vector<T>> readList(Reader& r, const Json& j, const std::string& path, std::string_view key,
+                                       std::size_t limit, std::string_view what, ReadItem readItem) {
+    const Json* list = r.require(j, path, key);
+    const std::string p = childPath(path, key);
+    if (!list || !r.expectArray(*list, p)) return std::nullopt;
+    if (list->size() > limit) {
+        r.error(p, "at most " + std::to_string(limit) + " " + std::string(what) + ", got " + std::to_string(list->size()));
+        return std::nullopt;
+    }
+    std::vector<T> items;
+    items.reserve(list->size());
+    bool ok = true;
+    for (std::size_t i = 0; i < list->size() && !r.full(); ++i) {
+        if (auto item = readItem((*list)[i], childPath(p, i))) items.push_back(std::move(*item));
+        else ok = false;
+    }
+    if (!ok) return std::nullopt;
+    return items;
+}
+
+// "vertices" and "triangles", inline.
+std::optional<Shape> readMesh(Reader& r, const Json& j, const std::string& path) {
+    r.checkKeys(j, path, propertyKeys(PropertyOwner::Mesh), "for a mesh shape");
+    const auto vertices = readList<Vec3>(r, j, path, "vertices", limits::kMaxMeshVertices, "vertices",
+                                         [&](const Json& v, const std::string& p) {
+                                             return r.readVec3(v, p, propertyRange(PropertyOwner::Mesh, "vertices"));
+                                         });
+    const auto triangles = readList<TriangleMesh::Indices>(
+        r, j, path, "triangles", limits::kMaxMeshTriangles, "triangles",
+        [&](const Json& t, const std::string& p) -> std::optional<TriangleMesh::Indices> {
+            if (!t.is_array() || t.size() != 3) {
+                r.error(p, "expected 3 vertex indices [i, j, k], got " +
+                               (t.is_array() ? std::to_string(t.size()) + " items" : io_detail::typeName(t)));
+                return std::nullopt;
+            }
+            TriangleMesh::Indices indices{};
+            for (std::size_t k = 0; k < 3; ++k) {
+                const auto index = r.readInt(t[k], childPath(p, k), 0, int(limits::kMaxMeshVertices) - 1);
+                if (!index) return std::nullopt;
+                indices[k] = std::uint32_t(*index);
+            }
+            return indices;
+        });
+    if (!vertices || !triangles) return std::nullopt;
+    TriangleMesh::BuildResult built = TriangleMesh::build(*vertices, *triangles);
+    if (!built.mesh) {
+        r.error(childPath(path, "triangles"), "cannot build the mesh: " + built.error);
+        return std::nullopt;
+    }
+    return Shape::triangleMesh(std::move(built.mesh));
+}
+
+// "rows" x "columns" "heights", "cellSize", "heightScale".
+std::optional<Shape> readHeightField(Reader& r, const Json& j, const std::string& path) {
+    r.checkKeys(j, path, propertyKeys(PropertyOwner::HeightField), "for a heightField shape");
+    const auto count = [&](std::string_view key) -> std::optional<int> {
+        const Json* v = r.require(j, path, key);
+        const NumberRange& range = propertyRange(PropertyOwner::HeightField, key);
+        return v ? r.readInt(*v, childPath(path, key), int(range.min), int(range.max)) : std::nullopt;
+    };
+    const auto rows = count("rows");
+    const auto columns = count("columns");
+    float cellSize = 1.0f, heightScale = 1.0f;
+    const Json* cell = r.require(j, path, "cellSize");
+    const bool sized = cell && r.optionalFloat(j, path, "cellSize", propertyRange(PropertyOwner::HeightField, "cellSize"), cellSize);
+    const bool scaled =
+        r.optionalFloat(j, path, "heightScale", propertyRange(PropertyOwner::HeightField, "heightScale"), heightScale);
+    if (!rows || !columns || !sized || !scaled) return std::nullopt;
+    const std::size_t samples = std::size_t(*rows) * std::size_t(*columns);
+    if (2 * std::size_t(*rows - 1) * std::size_t(*columns - 1) > limits::kMaxMeshTriangles) {
+        r.error(path, "a height field may have at most " + std::to_string(limits::kMaxMeshTriangles) +
+                          " triangles (2 (rows - 1)(columns - 1)), got " +
+                          std::to_string(2 * std::size_t(*rows - 1) * std::size_t(*columns - 1)));
+        return std::nullopt;
+    }
+    const auto heights = readList<float>(r, j, path, "heights", samples, "heights (rows x columns)",
+                                         [&](const Json& h, const std::string& p) {
+                                             return r.readFloat(h, p, propertyRange(PropertyOwner::HeightField, "heights"));
+                                         });
+    if (!heights) return std::nullopt;
+    if (heights->size() != samples) {
+        r.error(childPath(path, "heights"), "expected rows x columns = " + std::to_string(samples) + " heights, got " +
+                                                std::to_string(heights->size()));
+        return std::nullopt;
+    }
+    HeightField::BuildResult built = HeightField::build(*rows, *columns, cellSize, heightScale, *heights);
+    if (!built.field) {
+        r.error(path, "cannot build the height field: " + built.error);
+        return std::nullopt;
+    }
+    return Shape::heightFieldOf(std::move(built.field));
+}
+
 std::optional<Shape> readShape(Reader& r, const Json& j, const std::string& path, Nesting nesting) {
     if (!r.expectObject(j, path)) return std::nullopt;
     const Json* typeValue = r.require(j, path, "type");
@@ -232,9 +332,13 @@ std::optional<Shape> readShape(Reader& r, const Json& j, const std::string& path
     } else if (*type == "compound") {
         if (nesting == Nesting::BodyShape) return readCompound(r, j, path);
         r.error(childPath(path, "type"), "a compound's child must be a convex shape: compounds do not nest");
+    } else if (*type == "mesh" || *type == "heightField") {
+        if (nesting == Nesting::BodyShape) return *type == "mesh" ? readMesh(r, j, path) : readHeightField(r, j, path);
+        r.error(childPath(path, "type"), "a compound's child must be a convex shape, not a " + *type);
     } else {
-        r.error(childPath(path, "type"), "unknown shape type '" + *type +
-                                             "' (expected box, sphere, capsule, cylinder, convexHull or compound)");
+        r.error(childPath(path, "type"),
+                "unknown shape type '" + *type +
+                    "' (expected box, sphere, capsule, cylinder, convexHull, compound, mesh or heightField)");
     }
     return std::nullopt;
 }
@@ -280,6 +384,10 @@ std::optional<SceneBody> readBody(Reader& r, const Json& b, const std::string& p
 
     if (const Json* shape = r.require(b, path, "shape"))
         if (auto parsed = readShape(r, *shape, childPath(path, "shape"), Nesting::BodyShape)) s.shape = std::move(*parsed);
+
+    if (const std::string problem = validation::dynamicShapeProblem(s.shape.type);
+        s.motion == MotionType::Dynamic && !problem.empty())
+        r.error(childPath(path, "motion"), problem);
 
     r.optionalVec3(b, path, "position", limits::kCoordinate, s.position);
     if (const Json* orientation = Reader::find(b, "orientation"))

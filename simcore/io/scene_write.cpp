@@ -106,6 +106,30 @@ OrderedJson shapeJson(const Shape& shape) {
             j["children"] = std::move(children);
             break;
         }
+        case ShapeType::Mesh: {
+            OrderedJson vertices = OrderedJson::array();
+            OrderedJson triangles = OrderedJson::array();
+            if (shape.mesh) {
+                for (const Vec3& v : shape.mesh->vertices()) vertices.push_back(vec3(v));
+                for (const TriangleMesh::Indices& t : shape.mesh->triangleIndices())
+                    triangles.push_back(OrderedJson::array({t[0], t[1], t[2]}));
+            }
+            j["vertices"] = std::move(vertices);
+            j["triangles"] = std::move(triangles);
+            break;
+        }
+        case ShapeType::HeightField: {
+            if (!shape.heightField) break;
+            const HeightField& field = *shape.heightField;
+            j["rows"] = field.rows();
+            j["columns"] = field.columns();
+            j["cellSize"] = number(field.cellSize());
+            j["heightScale"] = number(field.heightScale());
+            OrderedJson heights = OrderedJson::array();
+            for (float h : field.heights()) heights.push_back(number(h));
+            j["heights"] = std::move(heights);
+            break;
+        }
     }
     return j;
 }

@@ -147,6 +147,8 @@ MassProperties massProperties(const Shape& shape, float density) {
     case ShapeType::Cylinder: return cylinderProperties(shape.radius, shape.halfHeight, rho);
     case ShapeType::ConvexHull: return shape.hull ? hullProperties(*shape.hull, rho) : MassProperties{};
     case ShapeType::Compound: return shape.compound ? compoundProperties(*shape.compound, rho) : MassProperties{};
+    case ShapeType::Mesh:
+    case ShapeType::HeightField: return {};  // a surface has no volume: static and kinematic only
     }
     return {};
 }

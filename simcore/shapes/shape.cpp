@@ -16,6 +16,8 @@ std::string_view shapeTypeName(ShapeType type) {
     case ShapeType::Cylinder: return "cylinder";
     case ShapeType::ConvexHull: return "convexHull";
     case ShapeType::Compound: return "compound";
+    case ShapeType::Mesh: return "mesh";
+    case ShapeType::HeightField: return "heightField";
     }
     return "unknown";
 }
@@ -64,7 +66,47 @@ Shape Shape::compoundOf(std::shared_ptr<const CompoundShape> compound) {
     return s;
 }
 
+Shape Shape::triangleMesh(std::shared_ptr<const TriangleMesh> mesh) {
+    Shape s;
+    s.type = ShapeType::Mesh;
+    s.mesh = std::move(mesh);
+    return s;
+}
+
+Shape Shape::heightFieldOf(std::shared_ptr<const HeightField> field) {
+    Shape s;
+    s.type = ShapeType::HeightField;
+    s.heightField = std::move(field);
+    return s;
+}
+
+namespace {
+
+bool hasSurface(const Shape& shape) {
+    return shape.type == ShapeType::Mesh ? shape.mesh != nullptr : shape.heightField != nullptr;
+}
+
+}  // namespace
+
+Aabb boundsInFrame(const Aabb& box, const Transform& transform) {
+    const Mat3 toLocal = glm::transpose(glm::mat3_cast(transform.rotation));
+    const Vec3 half = box.halfExtents();
+    Vec3 localHalf(0.0f);
+    for (int j = 0; j < 3; ++j) localHalf += glm::abs(toLocal[j]) * half[j];
+    return Aabb::fromCenterHalfExtents(toLocal * (box.center() - transform.position), localHalf);
+}
+
+Aabb placedBounds(const Aabb& local, const Transform& transform) {
+    const Mat3 rotation = glm::mat3_cast(transform.rotation);
+    const Vec3 half = local.halfExtents();
+    Vec3 worldHalf(0.0f);
+    for (int j = 0; j < 3; ++j) worldHalf += glm::abs(rotation[j]) * half[j];
+    return Aabb::fromCenterHalfExtents(transform.apply(local.center()), worldHalf);
+}
+
 std::size_t subShapeCount(const Shape& shape) {
+    if (isSurface(shape.type))
+        return hasSurface(shape) ? visitSurface(shape, [](const auto& s) { return s.triangleCount(); }) : 0;
     if (shape.type != ShapeType::Compound) return 1;
     return shape.compound ? shape.compound->size() : 0;
 }
@@ -80,6 +122,13 @@ Transform subShapeTransform(const Shape& shape, std::size_t index, const Transfo
 }
 
 Aabb subShapeLocalBounds(const Shape& shape, std::size_t index) {
+    if (isSurface(shape.type)) {
+        Aabb bounds;
+        const Triangle triangle =
+            visitSurface(shape, [&](const auto& s) { return s.triangle(static_cast<std::uint32_t>(index)); });
+        for (const Vec3& v : triangle.vertices) bounds.grow(v);
+        return bounds;
+    }
     return shape.type == ShapeType::Compound ? shape.compound->childBounds(index) : localBounds(shape);
 }
 
@@ -132,6 +181,12 @@ Vec3 support(const Shape& shape, const Vec3& direction) {
         }
         return best;
     }
+    case ShapeType::Mesh:
+    case ShapeType::HeightField: {
+        const Aabb bounds = localBounds(shape);
+        return {direction.x >= 0.0f ? bounds.max.x : bounds.min.x, direction.y >= 0.0f ? bounds.max.y : bounds.min.y,
+                direction.z >= 0.0f ? bounds.max.z : bounds.min.z};
+    }
     }
     return Vec3(0.0f);
 }
@@ -156,6 +211,10 @@ Aabb localBounds(const Shape& shape) {
     }
     case ShapeType::Compound:
         return shape.compound ? shape.compound->bounds() : Aabb{Vec3(0.0f), Vec3(0.0f)};
+    case ShapeType::Mesh:
+    case ShapeType::HeightField:
+        if (!hasSurface(shape)) return {Vec3(0.0f), Vec3(0.0f)};
+        return visitSurface(shape, [](const auto& s) { return s.bounds(); });
     }
     return {Vec3(0.0f), Vec3(0.0f)};
 }
@@ -204,6 +263,9 @@ Aabb worldBounds(const Shape& shape, const Transform& transform) {
             bounds.grow(worldBounds(child.shape, childTransform(child, transform)));
         return bounds;
     }
+    case ShapeType::Mesh:
+    case ShapeType::HeightField:
+        return placedBounds(localBounds(shape), transform);
     }
     return {transform.position, transform.position};
 }
@@ -227,6 +289,8 @@ float volume(const Shape& shape) {
             for (const CompoundChild& child : shape.compound->children()) total += volume(child.shape);
         return total;
     }
+    case ShapeType::Mesh:
+    case ShapeType::HeightField: return 0.0f;
     }
     return 0.0f;
 }
@@ -238,7 +302,9 @@ float rollingRadius(const Shape& shape) {
     case ShapeType::Cylinder: return shape.radius;
     case ShapeType::Box:
     case ShapeType::ConvexHull:
-    case ShapeType::Compound: return 0.0f;
+    case ShapeType::Compound:
+    case ShapeType::Mesh:
+    case ShapeType::HeightField: return 0.0f;
     }
     return 0.0f;
 }
@@ -274,6 +340,11 @@ float minimumExtent(const Shape& shape) {
         for (const CompoundChild& child : shape.compound->children())
             thinnest = std::min(thinnest, minimumExtent(child.shape));
         return thinnest;
+    }
+    case ShapeType::Mesh:
+    case ShapeType::HeightField: {
+        const Vec3 size = localBounds(shape).max - localBounds(shape).min;
+        return std::min({size.x, size.y, size.z});
     }
     }
     return 0.0f;

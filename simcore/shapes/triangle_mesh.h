@@ -17,6 +17,7 @@
 
 #include "simcore/math/aabb.h"
 #include "simcore/math/math.h"
+#include "simcore/settings_schema.h"
 
 #include <array>
 #include <cstdint>
@@ -32,8 +33,8 @@ namespace simcore {
 constexpr float kActiveEdgeAngle = 5.0f * kPi / 180.0f;  // rad
 
 // Limits a mesh is built within, so a hostile file cannot exhaust memory or break float precision.
-constexpr std::size_t kMaxMeshTriangles = 2'000'000;
-constexpr std::size_t kMaxMeshVertices = 3 * kMaxMeshTriangles;
+constexpr std::size_t kMaxMeshTriangles = limits::kMaxMeshTriangles;  // settings_schema.h: the loader's too
+constexpr std::size_t kMaxMeshVertices = limits::kMaxMeshVertices;
 constexpr float kMaxMeshCoordinate = 1e6f;  // m, the range of positions elsewhere in a scene
 
 // Per-triangle feature flags: bit i (0..2) = edge i active, bit 3 + i = vertex i active.

@@ -53,6 +53,12 @@ void validateShapeAt(const Shape& shape, const std::string& path) {
             }
             break;
         }
+        case ShapeType::Mesh:
+            require(shape.mesh != nullptr, path + " has no triangle mesh");
+            break;
+        case ShapeType::HeightField:
+            require(shape.heightField != nullptr, path + " has no height field");
+            break;
     }
 }
 
@@ -86,7 +92,17 @@ void validateBody(const BodyCreationSettings& s) {
     validateRollingResistance(s.rollingResistance);
 }
 
+std::string dynamicShapeProblem(ShapeType type) {
+    if (!isSurface(type)) return {};
+    return "a " + std::string(shapeTypeName(type)) +
+           " body must be static or kinematic: for a moving body use a convexHull or a compound of convex shapes";
+}
+
 MassProperties bodyMassProperties(const Shape& shape, MotionType motion, std::optional<float> mass, float density) {
+    if (motion == MotionType::Dynamic) {
+        const std::string problem = dynamicShapeProblem(shape.type);
+        require(problem.empty(), problem);
+    }
     if (motion != MotionType::Dynamic) {
         MassProperties centreOnly;
         centreOnly.centerOfMass = massProperties(shape, 1.0f).centerOfMass;

@@ -26,6 +26,9 @@ void validateBody(const BodyCreationSettings& s);
 // A body's mass properties: from its mass or density when dynamic; static and kinematic bodies
 // have infinite mass, and only the centre of mass matters (as the integrated point of a kinematic
 // body). Throws when the shape gives no usable mass.
+// Why a body of this shape cannot be dynamic, or empty when it can: surfaces (meshes, height
+// fields) have no volume, so no mass; the message suggests what to use instead.
+std::string dynamicShapeProblem(ShapeType type);
 MassProperties bodyMassProperties(const Shape& shape, MotionType motion, std::optional<float> mass, float density);
 
 void validateSettings(const WorldSettings& s);

@@ -37,7 +37,7 @@ struct WorldRayHit {
     float fraction = 0.0f;  // along the ray: point = origin + fraction * direction
     Vec3 point{0.0f};       // world frame (m)
     Vec3 normal{0.0f};      // unit, outward from the body at the point
-    std::uint32_t subShape = 0;  // which of the body's sub-shapes (shape.h): a compound's child index
+    std::uint32_t subShape = 0;  // which of the body's sub-shapes (shape.h): a compound's child, a surface's triangle
 };
 
 // A persistent contact as the engine's public API shows it (touching or speculative).

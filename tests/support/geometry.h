@@ -75,6 +75,9 @@ inline float signedDistance(const Shape& shape, const Vec3& p) {
             for (const HullFace& f : shape.hull->faces()) distance = std::max(distance, glm::dot(f.normal, p) - f.offset);
             return distance;
         }
+        case ShapeType::Compound:
+        case ShapeType::Mesh:
+        case ShapeType::HeightField: break;  // not convex: callers pass convex shapes only
     }
     return 0.0f;
 }
