@@ -6,6 +6,7 @@
 #include "app/document/scene_document.h"
 #include "app/document/scene_tree_model.h"
 #include "app/help_dialog.h"
+#include "app/panels/accuracy_panel.h"
 #include "app/panels/inspector_panel.h"
 #include "app/panels/profiler_panel.h"
 #include "app/panels/simulation_settings_model.h"
@@ -287,6 +288,14 @@ void MainWindow::createActions() {
     a = createAction(this, QStringLiteral("throw"), tr("&Throw"), Qt::Key_T,
                      tr("Throw a body from the camera along the view (T); it lives until Reset"));
     connect(a, &QAction::triggered, this, &MainWindow::throwBody);
+    a = createAction(this, QStringLiteral("exploreAccuracy"), tr("Explore &Accuracy"), {},
+                     tr("Sweep the scene over a grid of settings in the background: what accuracy costs in time"));
+    connect(a, &QAction::triggered, this, [this] {
+        auto* dock = findChild<QDockWidget*>(QStringLiteral("accuracyDock"));
+        dock->show();
+        dock->raise();
+        m_accuracy->explore();
+    });
     m_throwShapes = new QActionGroup(this);
     for (int type = 0; type < simcore::kShapeTypeCount; ++type) {
         QAction* choice = m_throwShapes->addAction(shapeDisplayName(static_cast<simcore::ShapeType>(type)));
@@ -338,6 +347,7 @@ void MainWindow::createDocks() {
     m_inspector = new InspectorPanel(m_document);
     m_settingsPanel = new SimulationSettingsPanel(m_settingsModel, m_simulation, m_debugDraw);
     m_profiler = new ProfilerPanel(m_simulation);
+    m_accuracy = new AccuracyPanel(m_document, m_settingsModel);
     auto* history = new QUndoView(m_document->undoStack());
     history->setObjectName(QStringLiteral("historyView"));
     history->setEmptyLabel(tr("<opened>"));
@@ -348,10 +358,13 @@ void MainWindow::createDocks() {
     QDockWidget* inspector = addDock(QStringLiteral("inspectorDock"), tr("Inspector"), m_inspector, Qt::RightDockWidgetArea);
     QDockWidget* settings = addDock(QStringLiteral("settingsDock"), tr("Simulation"), m_settingsPanel, Qt::RightDockWidgetArea);
     QDockWidget* profiler = addDock(QStringLiteral("profilerDock"), tr("Profiler"), m_profiler, Qt::BottomDockWidgetArea);
+    QDockWidget* accuracy = addDock(QStringLiteral("accuracyDock"), tr("Accuracy"), m_accuracy, Qt::BottomDockWidgetArea);
+    tabifyDockWidget(profiler, accuracy);
+    profiler->raise();
     tabifyDockWidget(inspector, settings);
     inspector->raise();
     splitDockWidget(scene, historyDock, Qt::Vertical);
-    for (QDockWidget* dock : {scene, historyDock, inspector, settings, profiler}) {
+    for (QDockWidget* dock : {scene, historyDock, inspector, settings, profiler, accuracy}) {
         dock->toggleViewAction()->setObjectName(dock->objectName() + QStringLiteral("Toggle"));
     }
     arrangeDefaultLayout();
@@ -419,6 +432,8 @@ void MainWindow::createMenusAndToolBars() {
     simulation->addAction(m_playAction);
     simulation->addAction(action(QStringLiteral("step")));
     simulation->addAction(action(QStringLiteral("reset")));
+    simulation->addSeparator();
+    simulation->addAction(action(QStringLiteral("exploreAccuracy")));
     simulation->addSeparator();
     simulation->addAction(action(QStringLiteral("throw")));
     QMenu* throwShape = simulation->addMenu(tr("Throw &Shape"));

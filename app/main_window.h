@@ -17,6 +17,7 @@ class QTreeView;
 
 namespace interplay {
 
+class AccuracyPanel;
 class DebugDrawOptions;
 class DocumentManager;
 class InspectorPanel;
@@ -46,6 +47,7 @@ public:
     InspectorPanel* inspector() const { return m_inspector; }
     SimulationSettingsPanel* settingsPanel() const { return m_settingsPanel; }
     ProfilerPanel* profiler() const { return m_profiler; }
+    AccuracyPanel* accuracyPanel() const { return m_accuracy; }
     DebugDrawOptions* debugDrawOptions() const { return m_debugDraw; }
     QAction* action(const QString& objectName) const;  // e.g. "play", "save", "addBox"
     // The built-in scene, as at start-up without a file.
@@ -98,6 +100,7 @@ private:
     InspectorPanel* m_inspector = nullptr;
     SimulationSettingsPanel* m_settingsPanel = nullptr;
     ProfilerPanel* m_profiler = nullptr;
+    AccuracyPanel* m_accuracy = nullptr;
 
     QMenu* m_viewMenu = nullptr;
     QMenu* m_recentMenu = nullptr;
