@@ -18,6 +18,7 @@
 #include "support/isolated_settings.h"
 
 #include <QAction>
+#include <QElapsedTimer>
 #include <QLabel>
 #include <QDockWidget>
 #include <QProgressBar>
@@ -59,6 +60,7 @@ private slots:
     void cancelStopsMidWayAndKeepsThePointsDone();
     void applyingAPointIsOneUndoEntry();
     void editingWhileASweepRunsLeavesItsResults();
+    void plotMarksTheFrontAndTheChosenPoint();
 
 private:
     AccuracyPanel* panel() const { return m_window->accuracyPanel(); }
@@ -228,6 +230,50 @@ void TestEditorAccuracy::editingWhileASweepRunsLeavesItsResults() {
     for (int row = 0; row < model()->rowCount(); ++row) {
         for (std::size_t m = 0; m < accuracy::kMeasureCount; ++m)
             QCOMPARE(model()->point(row).measures[m], during[std::size_t(row)].measures[m]);
+    }
+}
+
+// With INTERPLAY_ACCURACY_SCREENSHOT=FILE.png (and INTERPLAY_ACCURACY_SCENE=SCENE.json) it sweeps
+// that scene at the panel's default grid and saves the window: the README's screenshot.
+void TestEditorAccuracy::plotMarksTheFrontAndTheChosenPoint() {
+    const QString screenshot = qEnvironmentVariable("INTERPLAY_ACCURACY_SCREENSHOT");
+    if (screenshot.isEmpty()) {
+        accuracy::SweepSpec spec = tinySpec();
+        spec.knobs[0].values = {"1", "2", "4"};
+        panel()->setSpec(spec);
+    } else {
+        QVERIFY(m_window->documentManager()->openFile(qEnvironmentVariable("INTERPLAY_ACCURACY_SCENE")));
+    }
+    showPanel();
+    QElapsedTimer clock;
+    clock.start();
+    QTest::mouseClick(button("exploreButton"), Qt::LeftButton);
+    QVERIFY(waitForSweep());
+    qInfo("%d points in %.1f s", model()->rowCount(), clock.elapsed() / 1000.0);
+    QVERIFY(model()->rowCount() >= 3);
+
+    // The cheapest point is always on the front (nothing is cheaper): drawn red; once chosen, blue.
+    int cheapest = 0;
+    for (int row = 1; row < model()->rowCount(); ++row)
+        if (model()->point(row).msPerSimulatedSecond < model()->point(cheapest).msPerSimulatedSecond) cheapest = row;
+    QVERIFY(model()->onFront(cheapest, model()->measure()));
+    auto* plot = panel()->findChild<interplay::AccuracyPlot*>();
+    const std::optional<QPointF> at = plot->pointPosition(cheapest);
+    QVERIFY(at);
+    const auto colourAt = [plot](QPointF p) { return plot->grab().toImage().pixelColor(p.toPoint() * plot->devicePixelRatio()); };
+    QColor drawn = colourAt(*at);
+    QVERIFY2(drawn.red() > 150 && drawn.green() < 100 && drawn.blue() < 100, qPrintable(drawn.name()));
+    QTest::mouseClick(plot, Qt::LeftButton, {}, at->toPoint());
+    QCOMPARE(panel()->chosenRow(), cheapest);
+    drawn = colourAt(*at);
+    QVERIFY2(drawn.blue() > 150 && drawn.red() < 100, qPrintable(drawn.name()));
+
+    if (!screenshot.isEmpty()) {
+        // A taller dock than the default layout's, so that the plot reads.
+        auto* dock = m_window->findChild<QDockWidget*>(QStringLiteral("accuracyDock"));
+        m_window->resizeDocks({dock}, {430}, Qt::Vertical);
+        QTest::qWait(300);
+        QVERIFY(m_window->grab().save(screenshot));
     }
 }
 

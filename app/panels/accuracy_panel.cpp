@@ -18,14 +18,6 @@
 
 namespace interplay {
 
-namespace {
-
-QString toQString(std::string_view text) {
-    return QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size()));
-}
-
-}  // namespace
-
 AccuracyPanel::AccuracyPanel(SceneDocument* document, SimulationSettingsModel* settings, QWidget* parent)
     : QWidget(parent),
       m_document(document),
@@ -57,9 +49,7 @@ AccuracyPanel::AccuracyPanel(SceneDocument* document, SimulationSettingsModel* s
     m_seconds->setToolTip(tr("Simulated time per run: longer runs show more drift and take longer"));
     m_measure->setObjectName(QStringLiteral("measureChoice"));
     for (std::size_t m = 0; m < accuracy::kMeasureCount; ++m) {
-        const auto measure = static_cast<accuracy::Measure>(m);
-        m_measure->addItem(QStringLiteral("%1 (%2)").arg(toQString(accuracy::measureTitle(measure)),
-                                                          toQString(accuracy::measureUnit(measure))));
+        m_measure->addItem(AccuracySweepModel::measureLabel(static_cast<accuracy::Measure>(m)));
     }
     m_status->setObjectName(QStringLiteral("sweepStatus"));
     m_status->setWordWrap(true);
@@ -69,6 +59,8 @@ AccuracyPanel::AccuracyPanel(SceneDocument* document, SimulationSettingsModel* s
     m_table->setSelectionMode(QAbstractItemView::SingleSelection);
     m_table->verticalHeader()->hide();
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    m_table->setWordWrap(false);
+    m_table->setTextElideMode(Qt::ElideMiddle);
     m_details->setObjectName(QStringLiteral("pointDetails"));
     m_details->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_details->setAlignment(Qt::AlignTop | Qt::AlignLeft);
@@ -92,9 +84,9 @@ AccuracyPanel::AccuracyPanel(SceneDocument* document, SimulationSettingsModel* s
     split->addWidget(m_plot);
     split->addWidget(m_table);
     split->addWidget(side);
-    split->setStretchFactor(0, 3);
+    split->setStretchFactor(0, 4);
     split->setStretchFactor(1, 3);
-    split->setStretchFactor(2, 1);
+    split->setStretchFactor(2, 2);
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(controls);
     layout->addWidget(m_status);

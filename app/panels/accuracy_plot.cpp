@@ -140,9 +140,8 @@ void AccuracyPlot::paintEvent(QPaintEvent*) {
     painter.drawRect(f->area);
     const QString xLabel = tr("ms per simulated second (log)");
     painter.drawText(QPointF(f->area.center().x() - metrics.horizontalAdvance(xLabel) / 2.0, height() - 4.0), xLabel);
-    const QString measure = m_model->headerData(AccuracySweepModel::FirstMeasureColumn + int(m_model->measure()),
-                                                Qt::Horizontal).toString();
-    painter.drawText(QPointF(4, metrics.ascent() + 2), tr("%1, log; failed runs above the box").arg(measure));
+    painter.drawText(QPointF(4, metrics.ascent() + 2), tr("%1, log; failed runs above the box")
+                                                            .arg(AccuracySweepModel::measureLabel(m_model->measure())));
 
     // The front, cheapest first: the rows in order of cost.
     std::vector<std::pair<double, QPointF>> front;
@@ -160,7 +159,12 @@ void AccuracyPlot::paintEvent(QPaintEvent*) {
         painter.drawPath(path);
     }
 
-    for (int row = 0; row < m_model->rowCount(); ++row) {
+    // The chosen point last, on top of any it overlaps.
+    std::vector<int> order;
+    for (int row = 0; row < m_model->rowCount(); ++row)
+        if (row != m_chosenRow) order.push_back(row);
+    if (m_chosenRow >= 0 && m_chosenRow < m_model->rowCount()) order.push_back(m_chosenRow);
+    for (int row : order) {
         const std::optional<QPointF> p = pointPosition(row);
         if (!p) continue;
         const bool onFront = m_model->onFront(row, m_model->measure());

@@ -69,7 +69,15 @@ bool AccuracySweepModel::start(const simcore::Scene& scene, const accuracy::Swee
     m_labels.clear();
     m_fronts = {};
     endResetModel();
-    const std::vector<accuracy::GridPoint> grid = accuracy::gridPoints(spec);
+    std::vector<accuracy::GridPoint> grid;
+    std::vector<simcore::WorldSettings> gridSettings;
+    for (accuracy::GridPoint& point : accuracy::gridPoints(spec)) {
+        simcore::Scene applied = scene;
+        for (const std::string& a : point.assignments) simcore::applySettingOverride(applied, a);
+        if (std::find(gridSettings.begin(), gridSettings.end(), applied.settings) != gridSettings.end()) continue;
+        gridSettings.push_back(applied.settings);
+        grid.push_back(std::move(point));
+    }
     m_gridSize = grid.size();
     m_startedAt = QDateTime::currentDateTime();
     m_cancel = false;
@@ -123,6 +131,23 @@ void AccuracySweepModel::finish(std::shared_ptr<Outcome> outcome) {
     m_cancelled = outcome->cancelled;
     emit runningChanged(false);
     emit sweepEnded(outcome->cancelled, outcome->error);
+}
+
+QString AccuracySweepModel::measureLabel(accuracy::Measure measure) {
+    return QStringLiteral("%1 (%2)").arg(toQString(accuracy::measureTitle(measure)), toQString(accuracy::measureUnit(measure)));
+}
+
+QString AccuracySweepModel::displayAssignment(const std::string& assignment) {
+    const QString text = QString::fromStdString(assignment);
+    const qsizetype equals = text.indexOf(QLatin1Char('='));
+    if (text.left(equals) != QStringLiteral("timeStep")) return text;
+    // Steps are chosen as rates: 1/60 reads better than 0.016666668.
+    bool ok = false;
+    const double step = text.mid(equals + 1).toDouble(&ok);
+    const double rate = ok && step > 0.0 ? 1.0 / step : 0.0;
+    if (rate >= 1.0 && std::abs(rate - std::round(rate)) < 1e-3 * rate)
+        return QStringLiteral("timeStep=1/%1").arg(std::llround(rate));
+    return text;
 }
 
 void AccuracySweepModel::setMeasure(accuracy::Measure measure) {
@@ -188,7 +213,7 @@ QVariant AccuracySweepModel::data(const QModelIndex& index, int role) const {
     switch (index.column()) {
     case SettingsColumn: {
         QStringList assignments;
-        for (const std::string& a : p.point.assignments) assignments << QString::fromStdString(a);
+        for (const std::string& a : p.point.assignments) assignments << displayAssignment(a);
         return assignments.isEmpty() ? tr("(scene)") : assignments.join(QStringLiteral(", "));
     }
     case LabelsColumn: return labels(index.row()).join(QStringLiteral(", "));

@@ -43,7 +43,8 @@ public:
     // the scene's own settings and the three quality presets, so that the plot can mark them.
     static accuracy::SweepSpec defaultSpec();
 
-    // Starts sweeping a copy of `scene`; refuses (returns false, with `error`) while a sweep runs
+    // Starts sweeping a copy of `scene` over the spec's grid, where points that give the scene the
+    // same settings (a preset equal to the scene's own, say) run once, as the first of them; refuses (returns false, with `error`) while a sweep runs
     // or when the spec does not fit the scene (accuracy::checkSpec's sentence).
     bool start(const simcore::Scene& scene, const accuracy::SweepSpec& spec, QString& error);
     void cancel();
@@ -52,6 +53,11 @@ public:
     const simcore::Scene& sweptScene() const { return m_scene; }
     QDateTime startedAt() const { return m_startedAt; }
     std::size_t gridSize() const { return m_gridSize; }
+
+    // "largest position error (m)": the measure as the drop-down and the plot name it.
+    static QString measureLabel(accuracy::Measure measure);
+    // "timeStep=1/60" for timeStep=0.016666668: an assignment as the table and tooltips show it.
+    static QString displayAssignment(const std::string& assignment);
 
     accuracy::Measure measure() const { return m_measure; }
     void setMeasure(accuracy::Measure measure);
