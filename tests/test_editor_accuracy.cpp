@@ -184,6 +184,7 @@ void TestEditorAccuracy::applyingAPointIsOneUndoEntry() {
     const int entries = undo->count();
     QTest::mouseClick(button("applyButton"), Qt::LeftButton);
     QCOMPARE(undo->count(), entries + 1);
+    QCOMPARE(undo->undoText(), QStringLiteral("Change settings to an accuracy point"));
     const simcore::WorldSettings& after = m_window->document()->scene().settings;
     QCOMPARE(after.substeps, 2);
     QCOMPARE(after.solver.velocityIterations, 2);
