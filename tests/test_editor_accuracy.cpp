@@ -17,17 +17,21 @@
 #include "support/editor_window.h"
 #include "support/isolated_settings.h"
 
+#include <QAbstractItemModelTester>
 #include <QAction>
+#include <QDockWidget>
 #include <QElapsedTimer>
 #include <QLabel>
-#include <QDockWidget>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QTest>
+#include <QToolTip>
 #include <QUndoStack>
 
+#include <cmath>
 #include <memory>
+#include <optional>
 
 using interplay::AccuracyPanel;
 using interplay::AccuracySweepModel;
@@ -103,6 +107,7 @@ void TestEditorAccuracy::exploreFillsTheTableWithTheGrid() {
     panel()->setSpec(spec);
     QSignalSpy ended(model(), &AccuracySweepModel::sweepEnded);
     QSignalSpy progress(model(), &AccuracySweepModel::progressChanged);
+    QAbstractItemModelTester tester(model(), QAbstractItemModelTester::FailureReportingMode::QtTest);
     // The menu action shows the dock and starts.
     m_window->action(QStringLiteral("exploreAccuracy"))->trigger();
     QVERIFY(m_window->findChild<QDockWidget*>(QStringLiteral("accuracyDock"))->isVisible());
@@ -176,8 +181,13 @@ void TestEditorAccuracy::applyingAPointIsOneUndoEntry() {
     const std::optional<QPointF> at = plot->pointPosition(row);
     QVERIFY(at);
     QCOMPARE(plot->rowAt(*at), row);
+    // Hovering it shows its knobs and figures; clicking it chooses it and shows them beside.
+    QTest::mouseMove(plot, at->toPoint());
+    QTRY_VERIFY2(QToolTip::text().contains(QStringLiteral("substeps=2")), qPrintable(QToolTip::text()));
+    QVERIFY(QToolTip::text().contains(QStringLiteral("largest position error")));
     QTest::mouseClick(plot, Qt::LeftButton, {}, at->toPoint());
     QCOMPARE(panel()->chosenRow(), row);
+    QVERIFY(panel()->findChild<QLabel*>(QStringLiteral("pointDetails"))->text().contains(QStringLiteral("substeps=2")));
 
     QUndoStack* undo = m_window->document()->undoStack();
     const simcore::WorldSettings before = m_window->document()->scene().settings;
