@@ -210,7 +210,10 @@ void TestEditorAccuracy::applyingAPointIsOneUndoEntry() {
 }
 
 void TestEditorAccuracy::editingWhileASweepRunsLeavesItsResults() {
-    panel()->setSpec(tinySpec());
+    // Two seconds a run, so that the edits below land while the worker is still stepping.
+    accuracy::SweepSpec spec = tinySpec();
+    spec.seconds = 2.0;
+    panel()->setSpec(spec);
     showPanel();
     const simcore::Scene original = m_window->document()->scene();
     QTest::mouseClick(button("exploreButton"), Qt::LeftButton);
