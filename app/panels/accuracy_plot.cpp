@@ -2,10 +2,10 @@
 
 #include "app/panels/accuracy_sweep_model.h"
 
+#include <QHelpEvent>
 #include <QMouseEvent>
 #include <QPainter>
 #include <QPainterPath>
-#include <QToolTip>
 
 #include <algorithm>
 #include <cmath>
@@ -41,7 +41,6 @@ struct AccuracyPlot::Frame {
 
 AccuracyPlot::AccuracyPlot(AccuracySweepModel* model, QWidget* parent) : QWidget(parent), m_model(model) {
     setObjectName(QStringLiteral("accuracyPlot"));
-    setMouseTracking(true);
     connect(model, &QAbstractItemModel::modelReset, this, qOverload<>(&QWidget::update));
     connect(model, &QAbstractItemModel::dataChanged, this, qOverload<>(&QWidget::update));
 }
@@ -203,13 +202,14 @@ void AccuracyPlot::paintEvent(QPaintEvent*) {
     }
 }
 
-void AccuracyPlot::mouseMoveEvent(QMouseEvent* event) {
-    const int row = rowAt(event->position());
-    if (row < 0) {
-        QToolTip::hideText();
-        return;
+bool AccuracyPlot::event(QEvent* event) {
+    // Qt's hover tooltip, due once the cursor rests: the point under it, or none (QWidget::event
+    // then shows nothing).
+    if (event->type() == QEvent::ToolTip) {
+        const int row = rowAt(static_cast<QHelpEvent*>(event)->pos());
+        setToolTip(row >= 0 ? m_model->describe(row) : QString());
     }
-    QToolTip::showText(event->globalPosition().toPoint(), m_model->describe(row), this);
+    return QWidget::event(event);
 }
 
 void AccuracyPlot::mousePressEvent(QMouseEvent* event) {
