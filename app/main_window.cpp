@@ -6,6 +6,7 @@
 #include "app/document/scene_document.h"
 #include "app/document/scene_tree_model.h"
 #include "app/help_dialog.h"
+#include "app/panels/accuracy_panel.h"
 #include "app/panels/inspector_panel.h"
 #include "app/panels/live_state_panel.h"
 #include "app/panels/profiler_panel.h"
@@ -326,6 +327,14 @@ void MainWindow::createActions() {
     a = createAction(this, QStringLiteral("throw"), tr("&Throw"), Qt::Key_T,
                      tr("Throw a body from the camera along the view (T); it lives until Reset"));
     connect(a, &QAction::triggered, this, &MainWindow::throwBody);
+    a = createAction(this, QStringLiteral("exploreAccuracy"), tr("Explore &Accuracy"), {},
+                     tr("Sweep the scene over a grid of settings in the background: what accuracy costs in time"));
+    connect(a, &QAction::triggered, this, [this] {
+        auto* dock = findChild<QDockWidget*>(QStringLiteral("accuracyDock"));
+        dock->show();
+        dock->raise();
+        m_accuracy->explore();
+    });
     m_throwShapes = new QActionGroup(this);
     for (int type = 0; type < simcore::kShapeTypeCount; ++type) {
         QAction* choice = m_throwShapes->addAction(shapeDisplayName(static_cast<simcore::ShapeType>(type)));
@@ -379,6 +388,7 @@ void MainWindow::createDocks() {
     m_profiler = new ProfilerPanel(m_simulation);
     m_liveState = new LiveStatePanel(m_document, m_simulation);
     m_liveState->watchHover(m_viewport);
+    m_accuracy = new AccuracyPanel(m_document, m_settingsModel);
     auto* history = new QUndoView(m_document->undoStack());
     history->setObjectName(QStringLiteral("historyView"));
     history->setEmptyLabel(tr("<opened>"));
@@ -390,11 +400,14 @@ void MainWindow::createDocks() {
     QDockWidget* settings = addDock(QStringLiteral("settingsDock"), tr("Simulation"), m_settingsPanel, Qt::RightDockWidgetArea);
     QDockWidget* profiler = addDock(QStringLiteral("profilerDock"), tr("Profiler"), m_profiler, Qt::BottomDockWidgetArea);
     QDockWidget* liveState = addDock(QStringLiteral("liveStateDock"), tr("Live State"), m_liveState, Qt::RightDockWidgetArea);
+    QDockWidget* accuracy = addDock(QStringLiteral("accuracyDock"), tr("Accuracy"), m_accuracy, Qt::BottomDockWidgetArea);
     splitDockWidget(inspector, liveState, Qt::Vertical);  // before tabifying: a tab group would take it as a tab
+    tabifyDockWidget(profiler, accuracy);
+    profiler->raise();
     tabifyDockWidget(inspector, settings);
     inspector->raise();
     splitDockWidget(scene, historyDock, Qt::Vertical);
-    for (QDockWidget* dock : {scene, historyDock, inspector, settings, profiler, liveState}) {
+    for (QDockWidget* dock : {scene, historyDock, inspector, settings, profiler, liveState, accuracy}) {
         dock->toggleViewAction()->setObjectName(dock->objectName() + QStringLiteral("Toggle"));
     }
     arrangeDefaultLayout();
@@ -465,6 +478,8 @@ void MainWindow::createMenusAndToolBars() {
     simulation->addAction(action(QStringLiteral("stepBack")));
     simulation->addAction(action(QStringLiteral("step")));
     simulation->addAction(action(QStringLiteral("reset")));
+    simulation->addSeparator();
+    simulation->addAction(action(QStringLiteral("exploreAccuracy")));
     simulation->addSeparator();
     simulation->addAction(action(QStringLiteral("throw")));
     QMenu* throwShape = simulation->addMenu(tr("Throw &Shape"));

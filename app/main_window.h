@@ -17,6 +17,7 @@ class QTreeView;
 
 namespace interplay {
 
+class AccuracyPanel;
 class DebugDrawOptions;
 class DocumentManager;
 class InspectorPanel;
@@ -50,6 +51,7 @@ public:
     ProfilerPanel* profiler() const { return m_profiler; }
     LiveStatePanel* liveState() const { return m_liveState; }
     TimelineBar* timelineBar() const { return m_timelineBar; }
+    AccuracyPanel* accuracyPanel() const { return m_accuracy; }
     DebugDrawOptions* debugDrawOptions() const { return m_debugDraw; }
     QAction* action(const QString& objectName) const;  // e.g. "play", "save", "addBox"
     // The built-in scene, as at start-up without a file.
@@ -104,6 +106,7 @@ private:
     ProfilerPanel* m_profiler = nullptr;
     LiveStatePanel* m_liveState = nullptr;
     TimelineBar* m_timelineBar = nullptr;
+    AccuracyPanel* m_accuracy = nullptr;
 
     QMenu* m_viewMenu = nullptr;
     QMenu* m_recentMenu = nullptr;

@@ -242,7 +242,8 @@ void TestMainWindow::docksHaveNamesAndViewMenuEntries() {
         QVERIFY(m_window->findChild<QAction*>(dock->objectName() + "Toggle"));
     }
     names.sort();
-    QCOMPARE(names, (QStringList{"historyDock", "inspectorDock", "liveStateDock", "profilerDock", "sceneDock", "settingsDock"}));
+    QCOMPARE(names, (QStringList{"accuracyDock", "historyDock", "inspectorDock", "liveStateDock", "profilerDock", "sceneDock",
+                                 "settingsDock"}));
 
     // The layout survives a restart through QSettings.
     auto* profiler = m_window->findChild<QDockWidget*>("profilerDock");

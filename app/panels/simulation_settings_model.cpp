@@ -194,6 +194,10 @@ void SimulationSettingsModel::setPreset(int preset) {
     push(tr("Quality %1").arg(presetNames().at(preset)), QStringLiteral("preset"), after);
 }
 
+bool SimulationSettingsModel::setSettings(const QString& what, const simcore::WorldSettings& after) {
+    return push(what, QStringLiteral("*"), after);
+}
+
 void SimulationSettingsModel::setInteracting(bool interacting) {
     if (interacting == m_interacting) return;
     m_interacting = interacting;

@@ -56,6 +56,10 @@ public:
     // returns whether it was accepted. Text that is not a number arrives as NaN and is refused.
     Q_INVOKABLE bool setValue(const QString& key, const QVariant& value);
 
+    // Replaces every setting at once (an accuracy point's knobs): one history entry "Change <what>",
+    // refused like setValue() when the scene with them would not load.
+    bool setSettings(const QString& what, const simcore::WorldSettings& after);
+
     int preset() const;
     QStringList presetNames() const;
     bool interacting() const { return m_interacting; }
