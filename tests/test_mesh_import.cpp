@@ -253,7 +253,9 @@ void TestMeshImport::badFilesNameTheFile_data() {
     QTest::newRow("binary stl truncated") << "cut.stl" << QByteArray(stl.data(), 84 + 60) << "cut.stl: cannot be read as stl";
     QTest::newRow("binary stl lying count") << "lie.stl" << QByteArray(tetrahedronBinaryStl(1000000).data(), int(stl.size()))
                                             << "lie.stl: cannot be read as stl";
-    QTest::newRow("glb garbage") << "junk.glb" << QByteArray("glTF\x02\0\0\0\xff\xff\xff\x7f garbage", 24) << "junk.glb: cannot be read as glb";
+    static constexpr char kGlbGarbage[] = "glTF\x02\0\0\0\xff\xff\xff\x7f garbage";  // a header claiming 2 GiB
+    QTest::newRow("glb garbage") << "junk.glb" << QByteArray(kGlbGarbage, sizeof kGlbGarbage - 1)
+                                 << "junk.glb: cannot be read as glb";
     QTest::newRow("glb truncated") << "cut.glb" << quadGlb().left(100) << "cut.glb: cannot be read as glb";
     QTest::newRow("gltf not json") << "junk.gltf" << QByteArray("{ this is not json") << "junk.gltf: cannot be read as gltf";
     QTest::newRow("gltf missing buffer") << "nobuf.gltf" << quadGltfJson("absent.bin", 60) << "nobuf.gltf: cannot be read as gltf";
