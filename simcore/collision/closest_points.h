@@ -1,7 +1,6 @@
 #pragma once
 // Closest points between points, segments and triangles (Ericson, Real-Time Collision Detection,
-// 5.1.2, 5.1.5, 5.1.9). Used by the mesh narrow phase; collide_shapes.cpp still has file-local
-// versions of the segment helpers, which should move here when that file is next changed.
+// 5.1.2, 5.1.5, 5.1.9), for the convex and the mesh narrow phases.
 
 #include "simcore/math/math.h"
 
@@ -11,9 +10,9 @@ namespace simcore {
 
 inline Vec3 closestPointOnSegment(const Vec3& p, const Vec3& s0, const Vec3& s1) {
     const Vec3 d = s1 - s0;
-    const float lengthSq = glm::dot(d, d);
-    if (lengthSq <= 0.0f) return s0;
-    return s0 + std::clamp(glm::dot(p - s0, d) / lengthSq, 0.0f, 1.0f) * d;
+    const float length2 = glm::dot(d, d);
+    if (length2 <= 0.0f) return s0;
+    return s0 + std::clamp(glm::dot(p - s0, d) / length2, 0.0f, 1.0f) * d;
 }
 
 // Closest points of segments p0-p1 and q0-q1.
@@ -21,19 +20,21 @@ inline void closestPointsOfSegments(const Vec3& p0, const Vec3& p1, const Vec3& 
                                     Vec3& onQ) {
     const Vec3 d1 = p1 - p0, d2 = q1 - q0, r = p0 - q0;
     const float a = glm::dot(d1, d1), e = glm::dot(d2, d2), f = glm::dot(d2, r);
+    constexpr float kTiny = 1e-12f;  // m^2: a segment this short is a point
     float s = 0.0f, t = 0.0f;
-    if (a <= 1e-20f && e <= 1e-20f) {
+    if (a <= kTiny && e <= kTiny) {
         // both points
-    } else if (a <= 1e-20f) {
+    } else if (a <= kTiny) {
         t = std::clamp(f / e, 0.0f, 1.0f);
     } else {
         const float c = glm::dot(d1, r);
-        if (e <= 1e-20f) {
+        if (e <= kTiny) {
             s = std::clamp(-c / a, 0.0f, 1.0f);
         } else {
             const float b = glm::dot(d1, d2);
-            const float denominator = a * e - b * b;  // >= 0; 0 when parallel: any s, take 0
-            s = denominator > 1e-20f * a * e ? std::clamp((b * f - c * e) / denominator, 0.0f, 1.0f) : 0.0f;
+            const float denominator = a * e - b * b;
+            // Parallel segments: any s works; 0 is as good as any, t follows.
+            s = denominator > 1e-7f * a * e ? std::clamp((b * f - c * e) / denominator, 0.0f, 1.0f) : 0.0f;
             t = (b * s + f) / e;
             if (t < 0.0f) {
                 t = 0.0f;

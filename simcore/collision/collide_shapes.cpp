@@ -6,6 +6,8 @@
 
 #include "simcore/collision/collide_shapes.h"
 
+#include "simcore/collision/closest_points.h"
+
 #include "simcore/collision/epa.h"
 #include "simcore/collision/gjk.h"
 
@@ -140,51 +142,6 @@ void reduceToManifold(const Contacts& contacts, ContactManifold& out) {
 Vec3 perpendicularTo(const Vec3& v) {
     const Vec3 other = std::abs(v.x) < 0.57f ? Vec3(1.0f, 0.0f, 0.0f) : Vec3(0.0f, 1.0f, 0.0f);
     return glm::normalize(glm::cross(v, other));
-}
-
-Vec3 closestPointOnSegment(const Vec3& p, const Vec3& s0, const Vec3& s1) {
-    const Vec3 d = s1 - s0;
-    const float length2 = lengthSquared(d);
-    if (length2 <= 0.0f) return s0;
-    return s0 + std::clamp(glm::dot(p - s0, d) / length2, 0.0f, 1.0f) * d;
-}
-
-// Closest points of segments p0-p1 and q0-q1 (Ericson, Real-Time Collision Detection, 5.1.9).
-void closestPointsOfSegments(const Vec3& p0, const Vec3& p1, const Vec3& q0, const Vec3& q1, Vec3& onP, Vec3& onQ) {
-    const Vec3 d1 = p1 - p0;
-    const Vec3 d2 = q1 - q0;
-    const Vec3 r = p0 - q0;
-    const float a = glm::dot(d1, d1);
-    const float e = glm::dot(d2, d2);
-    const float f = glm::dot(d2, r);
-    constexpr float kTiny = 1e-12f;
-    float s = 0.0f;
-    float t = 0.0f;
-    if (a <= kTiny && e <= kTiny) {
-        // both points
-    } else if (a <= kTiny) {
-        t = std::clamp(f / e, 0.0f, 1.0f);
-    } else {
-        const float c = glm::dot(d1, r);
-        if (e <= kTiny) {
-            s = std::clamp(-c / a, 0.0f, 1.0f);
-        } else {
-            const float b = glm::dot(d1, d2);
-            const float denominator = a * e - b * b;
-            // Parallel segments: any s works; 0 is as good as any, t follows.
-            s = denominator > 1e-7f * a * e ? std::clamp((b * f - c * e) / denominator, 0.0f, 1.0f) : 0.0f;
-            t = (b * s + f) / e;
-            if (t < 0.0f) {
-                t = 0.0f;
-                s = std::clamp(-c / a, 0.0f, 1.0f);
-            } else if (t > 1.0f) {
-                t = 1.0f;
-                s = std::clamp((b - c) / a, 0.0f, 1.0f);
-            }
-        }
-    }
-    onP = p0 + s * d1;
-    onQ = q0 + t * d2;
 }
 
 // Transform taking `inner`'s local frame into `outer`'s local frame.
