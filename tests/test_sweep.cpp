@@ -264,6 +264,13 @@ void TestSweep::threadsGiveTheSameNumbers() {
         QCOMPARE(three[i].point.id, one[i].point.id);
         QVERIFY(three[i].measures == one[i].measures);  // bit for bit
     }
+    // The reference with its half-step check on a thread of its own (--jobs above 1).
+    std::string error;
+    const std::optional<accuracy::Reference> sideBySide = accuracy::runReference(scene, spec, error, nullptr, 2);
+    QVERIFY2(sideBySide, error.c_str());
+    QVERIFY(sideBySide->run.positions == r.run.positions);
+    QVERIFY(sideBySide->run.orientations == r.run.orientations);
+    QVERIFY(sideBySide->convergence == r.convergence);
 }
 
 void TestSweep::resumedPointsAreNotRunAgain() {
@@ -311,6 +318,9 @@ void TestSweep::cancelStopsTheSweep() {
     QVERIFY(!accuracy::runPoint(scene, spec, accuracy::expandGrid(spec.knobs)[0], r, &cancel));
     std::string error;
     QVERIFY(!accuracy::runReference(scene, spec, error, &cancel));
+    QCOMPARE(error, std::string("cancelled"));
+    error.clear();
+    QVERIFY(!accuracy::runReference(scene, spec, error, &cancel, 2));
     QCOMPARE(error, std::string("cancelled"));
 }
 

@@ -9,6 +9,7 @@
 #include <charconv>
 #include <chrono>
 #include <cmath>
+#include <future>
 #include <limits>
 #include <mutex>
 #include <stdexcept>
@@ -329,13 +330,22 @@ Measures compare(const RunRecord& run, const RunRecord& reference) {
 }
 
 std::optional<Reference> runReference(const simcore::Scene& scene, const SweepSpec& spec, std::string& error,
-                                      const std::atomic<bool>* cancel) {
+                                      const std::atomic<bool>* cancel, int jobs) {
     Reference reference;
     reference.assignments = referenceAssignments(scene, spec);
-    reference.run = recordRun(scene, reference.assignments, spec, cancel);
     const std::vector<std::string> finerSettings = finerAssignments(scene, reference.assignments);
-    const RunRecord finer = reference.run.finite && !reference.run.cancelled ? recordRun(scene, finerSettings, spec, cancel)
-                                                                             : RunRecord{};
+    RunRecord finer;
+    if (jobs > 1) {
+        // std::async: the check's exception reaches the caller, and an exception here waits for it.
+        std::future<RunRecord> check =
+            std::async(std::launch::async, [&] { return recordRun(scene, finerSettings, spec, cancel); });
+        reference.run = recordRun(scene, reference.assignments, spec, cancel);
+        finer = check.get();
+    } else {
+        reference.run = recordRun(scene, reference.assignments, spec, cancel);
+        // A reference that failed needs no check.
+        if (reference.run.finite && !reference.run.cancelled) finer = recordRun(scene, finerSettings, spec, cancel);
+    }
     if (reference.run.cancelled || finer.cancelled) {
         error = "cancelled";
         return std::nullopt;

@@ -1,24 +1,18 @@
 #include "runner_options.h"
 
+#include "command_line.h"
+
 #include "simcore/settings_schema.h"
 #include "simcore/world/quality_preset.h"
 
 #include <charconv>
 #include <cmath>
-#include <limits>
 
 namespace runner {
 
 namespace {
 
-template <typename T>
-std::optional<T> parseNumber(const std::string& text) {
-    T value{};
-    const char* end = text.data() + text.size();
-    const auto [ptr, ec] = std::from_chars(text.data(), end, value);
-    if (ec != std::errc() || ptr != end) return std::nullopt;
-    return value;
-}
+using command_line::parseNumber;
 
 // "[1, -2.5, 3e3]" (spaces allowed) -> three finite floats.
 std::optional<std::array<float, 3>> parseVector(const std::string& text) {
@@ -90,78 +84,64 @@ ParseResult parseArguments(const std::vector<std::string>& arguments) {
         return result;
     };
 
-    for (std::size_t i = 0; i < arguments.size(); ++i) {
-        const std::string& arg = arguments[i];
-        if (arg == "--help" || arg == "-h") {
-            options.help = true;
-            return result;
-        }
-        if (arg == "--list-stages") {
-            options.listStages = true;
-            return result;
-        }
-        if (arg.rfind("--", 0) != 0) {
-            if (!options.scenePath.empty()) return fail("more than one scene given: '" + arg + "'");
-            options.scenePath = arg;
-            continue;
-        }
-        if (i + 1 >= arguments.size()) return fail("option " + arg + " needs a value");
-        const std::string& value = arguments[++i];
-
-        if (arg == "--steps") {
-            const auto steps = parseNumber<std::uint64_t>(value);
-            if (!steps) return fail("--steps expects a non-negative integer, got '" + value + "'");
-            options.steps = steps;
-        } else if (arg == "--seconds") {
-            const auto seconds = parseNumber<double>(value);
-            if (!seconds || !std::isfinite(*seconds) || *seconds < 0.0)
-                return fail("--seconds expects a non-negative number, got '" + value + "'");
-            options.seconds = seconds;
-        } else if (arg == "--dt") {
-            const auto dt = parseNumber<float>(value);
-            if (!dt || !std::isfinite(*dt) || *dt <= 0.0f)
-                return fail("--dt expects a positive number of seconds, got '" + value + "'");
-            options.timeStep = dt;
-        } else if (arg == "--substeps") {
-            const auto substeps = parseNumber<int>(value);
-            if (!substeps || *substeps < 1) return fail("--substeps expects an integer >= 1, got '" + value + "'");
-            options.substeps = substeps;
-        } else if (arg == "--iterations") {
-            const auto iterations = parseNumber<int>(value);
-            if (!iterations || *iterations < 1)
-                return fail("--iterations expects an integer >= 1, got '" + value + "'");
-            options.velocityIterations = iterations;
-        } else if (arg == "--threads") {
-            // The schema's range, so the option and the setting accept the same counts.
-            const simcore::NumberRange& range = simcore::findSetting("threads")->range;
-            const auto threads = parseNumber<int>(value);
-            if (!threads || !range.contains(*threads))
-                return fail("--threads expects an integer in " + range.describe() + " (0: one per core), got '" + value + "'");
-            options.settingOverrides.push_back("threads=" + std::to_string(*threads));
-        } else if (arg == "--preset") {
-            if (!simcore::parseQualityPreset(value))
-                return fail("--preset expects fast, balanced or accurate, got '" + value + "'");
-            preset = value;
-        } else if (arg == "--set") {
-            if (value.find('=') == std::string::npos)
-                return fail("--set expects key.path=value, got '" + value + "'");
-            options.settingOverrides.push_back(value);
-        } else if (arg == "--force") {
-            const std::size_t eq = value.rfind('=');
-            const auto force = eq == std::string::npos ? std::nullopt : parseVector(value.substr(eq + 1));
-            if (eq == 0 || !force)
-                return fail("--force expects NAME=[fx,fy,fz] with finite numbers, got '" + value + "'");
-            options.forces.push_back({value.substr(0, eq), *force});
-        } else if (arg == "--trace") {
-            options.tracePath = value;
-        } else if (arg == "--out") {
-            options.outPath = value;
-        } else if (arg == "--save") {
-            options.savePath = value;
-        } else {
-            return fail("unknown option " + arg);
-        }
-    }
+    const command_line::Walk walk = command_line::walkArguments(
+        arguments, {"--list-stages"}, [&](const std::string& arg, const std::string& value) -> std::optional<std::string> {
+            if (arg == "--steps") {
+                const auto steps = parseNumber<std::uint64_t>(value);
+                if (!steps) return "--steps expects a non-negative integer, got '" + value + "'";
+                options.steps = steps;
+            } else if (arg == "--seconds") {
+                const auto seconds = parseNumber<double>(value);
+                if (!seconds || !std::isfinite(*seconds) || *seconds < 0.0)
+                    return "--seconds expects a non-negative number, got '" + value + "'";
+                options.seconds = seconds;
+            } else if (arg == "--dt") {
+                const auto dt = parseNumber<float>(value);
+                if (!dt || !std::isfinite(*dt) || *dt <= 0.0f)
+                    return "--dt expects a positive number of seconds, got '" + value + "'";
+                options.timeStep = dt;
+            } else if (arg == "--substeps") {
+                const auto substeps = parseNumber<int>(value);
+                if (!substeps || *substeps < 1) return "--substeps expects an integer >= 1, got '" + value + "'";
+                options.substeps = substeps;
+            } else if (arg == "--iterations") {
+                const auto iterations = parseNumber<int>(value);
+                if (!iterations || *iterations < 1) return "--iterations expects an integer >= 1, got '" + value + "'";
+                options.velocityIterations = iterations;
+            } else if (arg == "--threads") {
+                // The schema's range, so the option and the setting accept the same counts.
+                const simcore::NumberRange& range = simcore::findSetting("threads")->range;
+                const auto threads = parseNumber<int>(value);
+                if (!threads || !range.contains(*threads))
+                    return "--threads expects an integer in " + range.describe() + " (0: one per core), got '" + value + "'";
+                options.settingOverrides.push_back("threads=" + std::to_string(*threads));
+            } else if (arg == "--preset") {
+                if (!simcore::parseQualityPreset(value)) return "--preset expects fast, balanced or accurate, got '" + value + "'";
+                preset = value;
+            } else if (arg == "--set") {
+                if (value.find('=') == std::string::npos) return "--set expects key.path=value, got '" + value + "'";
+                options.settingOverrides.push_back(value);
+            } else if (arg == "--force") {
+                const std::size_t eq = value.rfind('=');
+                const auto force = eq == std::string::npos ? std::nullopt : parseVector(value.substr(eq + 1));
+                if (eq == 0 || !force) return "--force expects NAME=[fx,fy,fz] with finite numbers, got '" + value + "'";
+                options.forces.push_back({value.substr(0, eq), *force});
+            } else if (arg == "--trace") {
+                options.tracePath = value;
+            } else if (arg == "--out") {
+                options.outPath = value;
+            } else if (arg == "--save") {
+                options.savePath = value;
+            } else {
+                return "unknown option " + arg;
+            }
+            return std::nullopt;
+        });
+    options.scenePath = walk.scenePath;
+    options.listStages = walk.stoppedAt == "--list-stages";
+    options.help = !walk.stoppedAt.empty() && !options.listStages;
+    if (!walk.stoppedAt.empty()) return result;
+    if (!walk.error.empty()) return fail(walk.error);
     if (options.scenePath.empty()) return fail("no scene file given");
     if (options.steps && options.seconds) return fail("--steps and --seconds exclude each other");
     if (preset) {

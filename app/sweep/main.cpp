@@ -81,9 +81,9 @@ std::optional<std::string> preparePlan(const fs::path& dir, const accuracy::Swee
     return accuracy::writeFileAtomically(accuracy::planPath(dir), accuracy::planJson(plan).dump(2) + "\n");
 }
 
-// DIR's reference when it has one of this sweep, else a new one, written there.
+// DIR's reference when it has one of this sweep, else a new one (on `jobs` threads), written there.
 std::optional<accuracy::Reference> prepareReference(const simcore::Scene& scene, const accuracy::SweepPlan& plan,
-                                                    const fs::path& dir, int& code) {
+                                                    const fs::path& dir, int jobs, int& code) {
     std::string error;
     if (fs::exists(accuracy::referencePath(dir))) {
         if (auto known = accuracy::readReference(accuracy::referencePath(dir), plan.key, error)) return known;
@@ -91,7 +91,7 @@ std::optional<accuracy::Reference> prepareReference(const simcore::Scene& scene,
     }
     std::cerr << "reference run (" << accuracy::referenceAssignments(scene, plan.spec).size() << " settings changed) and its "
               << "convergence check ..." << std::flush;
-    std::optional<accuracy::Reference> reference = accuracy::runReference(scene, plan.spec, error, &interrupted);
+    std::optional<accuracy::Reference> reference = accuracy::runReference(scene, plan.spec, error, &interrupted, jobs);
     std::cerr << '\n';
     if (!reference) {
         code = interrupted ? kInterrupted : kReferenceFailed;
@@ -202,8 +202,9 @@ int run(Options options) {
                                                  : fs::path("sweep-" + fs::path(options.scenePath).stem().string());
     std::signal(SIGINT, onInterrupt);
     if (auto error = preparePlan(dir, plan, options.point.empty())) return complain(*error, kBadArguments);
+    const int jobs = options.jobs == 0 ? static_cast<int>(std::max(1u, std::thread::hardware_concurrency())) : options.jobs;
     int code = kSuccess;
-    const std::optional<accuracy::Reference> reference = prepareReference(scene, plan, dir, code);
+    const std::optional<accuracy::Reference> reference = prepareReference(scene, plan, dir, jobs, code);
     if (!reference) return code;
 
     if (!options.emitJobsPath.empty()) {
@@ -218,7 +219,7 @@ int run(Options options) {
     // Results already in DIR are kept (resuming); each new one is written as soon as it is done.
     std::string writeError;
     accuracy::SweepRunOptions runOptions;
-    runOptions.jobs = options.jobs == 0 ? static_cast<int>(std::max(1u, std::thread::hardware_concurrency())) : options.jobs;
+    runOptions.jobs = jobs;
     runOptions.cancel = &interrupted;
     runOptions.lookup = [&](const accuracy::GridPoint& point) -> std::optional<accuracy::PointResult> {
         const fs::path file = accuracy::pointPath(dir, point);

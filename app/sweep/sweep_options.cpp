@@ -1,8 +1,9 @@
 #include "sweep_options.h"
 
+#include "runner/command_line.h"
+
 #include <nlohmann/json.hpp>
 
-#include <charconv>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -12,10 +13,8 @@ namespace sweep {
 namespace {
 
 std::optional<double> parseDouble(const std::string& text) {
-    double value = 0.0;
-    const char* end = text.data() + text.size();
-    const auto [ptr, ec] = std::from_chars(text.data(), end, value);
-    if (ec != std::errc() || ptr != end || !std::isfinite(value)) return std::nullopt;
+    const std::optional<double> value = command_line::parseNumber<double>(text);
+    if (!value || !std::isfinite(*value)) return std::nullopt;
     return value;
 }
 
@@ -45,8 +44,9 @@ std::string usageText() {
            "  --reference K=V   changes the reference run (default: timeStep 1/480 s or the scene's / 8,\n"
            "                    16 substeps, 8 velocity iterations, 2 relax passes); repeatable. Its own\n"
            "                    error is checked against a run with half its time step and reported\n"
-           "  --jobs N          points run at once on threads (default 1; 0: one per core). Timings are\n"
-           "                    noisier above 1, and the output says so\n"
+           "  --jobs N          points run at once on threads (default 1; 0: one per core); above 1 the\n"
+           "                    reference and its check also run side by side. Timings are noisier\n"
+           "                    above 1, and the output says so\n"
            "  --out DIR         where results go (default ./sweep-SCENENAME). A point whose result file is\n"
            "                    already in DIR/points is not run again: an interrupted sweep resumes\n"
            "  --emit-jobs FILE  runs the reference, then writes one shell command per grid point to FILE\n"
@@ -133,59 +133,55 @@ ParseResult parseArguments(const std::vector<std::string>& arguments) {
         result.error = std::move(message);
         return result;
     };
-    for (std::size_t i = 0; i < arguments.size(); ++i) {
-        const std::string& arg = arguments[i];
-        if (arg == "--help" || arg == "-h") {
-            options.help = true;
-            return result;
-        }
-        if (arg.rfind("--", 0) != 0) {
-            if (!options.scenePath.empty()) return fail("more than one scene given: '" + arg + "'");
-            options.scenePath = arg;
-            continue;
-        }
-        if (i + 1 >= arguments.size()) return fail("option " + arg + " needs a value");
-        const std::string& value = arguments[++i];
-        if (arg == "--knob") {
-            const std::optional<accuracy::Knob> knob = parseKnob(value);
-            if (!knob) return fail("--knob expects KEY=V1,V2,..., got '" + value + "'");
-            if (knob->values.empty()) return fail("the grid is empty: --knob " + knob->key + " has no values");
-            options.knobs.push_back(*knob);
-            options.knobsGiven = true;
-        } else if (arg == "--grid") {
-            options.gridPath = value;
-        } else if (arg == "--seconds" || arg == "--sample-rate") {
-            const std::optional<double> number = parseDouble(value);
-            if (!number || *number <= 0.0) return fail(arg + " expects a positive number, got '" + value + "'");
-            (arg == "--seconds" ? options.seconds : options.sampleRate) = number;
-        } else if (arg == "--reference" || arg == "--point") {
-            if (value.find('=') == std::string::npos || value.front() == '=')
-                return fail(arg + " expects KEY=VALUE, got '" + value + "'");
-            (arg == "--reference" ? options.reference : options.point).push_back(value);
-        } else if (arg == "--jobs") {
-            const std::optional<double> jobs = parseDouble(value);
-            if (!jobs || *jobs < 0.0 || *jobs > 1024.0 || *jobs != std::floor(*jobs))
-                return fail("--jobs expects an integer from 0 (one per core) to 1024, got '" + value + "'");
-            options.jobs = static_cast<int>(*jobs);
-        } else if (arg == "--out") {
-            options.outDir = value;
-        } else if (arg == "--emit-jobs") {
-            options.emitJobsPath = value;
-        } else if (arg == "--merge") {
-            options.mergeDir = value;
-        } else if (arg == "--target") {
-            const std::size_t eq = value.find('=');
-            const std::optional<accuracy::Measure> measure =
-                eq == std::string::npos ? std::nullopt : accuracy::parseMeasure(value.substr(0, eq));
-            const std::optional<double> limit = measure ? parseDouble(value.substr(eq + 1)) : std::nullopt;
-            if (!measure || !limit || *limit < 0.0)
-                return fail("--target expects MEASURE=LIMIT with a measure of --help and a limit >= 0, got '" + value + "'");
-            options.target = *measure;
-            options.targetLimit = *limit;
-        } else {
-            return fail("unknown option '" + arg + "'");
-        }
+    const command_line::Walk walk = command_line::walkArguments(
+        arguments, {}, [&](const std::string& arg, const std::string& value) -> std::optional<std::string> {
+            if (arg == "--knob") {
+                const std::optional<accuracy::Knob> knob = parseKnob(value);
+                if (!knob) return "--knob expects KEY=V1,V2,..., got '" + value + "'";
+                if (knob->values.empty()) return "the grid is empty: --knob " + knob->key + " has no values";
+                options.knobs.push_back(*knob);
+                options.knobsGiven = true;
+            } else if (arg == "--grid") {
+                options.gridPath = value;
+            } else if (arg == "--seconds" || arg == "--sample-rate") {
+                const std::optional<double> number = parseDouble(value);
+                if (!number || *number <= 0.0) return arg + " expects a positive number, got '" + value + "'";
+                (arg == "--seconds" ? options.seconds : options.sampleRate) = number;
+            } else if (arg == "--reference" || arg == "--point") {
+                if (value.find('=') == std::string::npos || value.front() == '=')
+                    return arg + " expects KEY=VALUE, got '" + value + "'";
+                (arg == "--reference" ? options.reference : options.point).push_back(value);
+            } else if (arg == "--jobs") {
+                const std::optional<double> jobs = parseDouble(value);
+                if (!jobs || *jobs < 0.0 || *jobs > 1024.0 || *jobs != std::floor(*jobs))
+                    return "--jobs expects an integer from 0 (one per core) to 1024, got '" + value + "'";
+                options.jobs = static_cast<int>(*jobs);
+            } else if (arg == "--out") {
+                options.outDir = value;
+            } else if (arg == "--emit-jobs") {
+                options.emitJobsPath = value;
+            } else if (arg == "--merge") {
+                options.mergeDir = value;
+            } else if (arg == "--target") {
+                const std::size_t eq = value.find('=');
+                const std::optional<accuracy::Measure> measure =
+                    eq == std::string::npos ? std::nullopt : accuracy::parseMeasure(value.substr(0, eq));
+                const std::optional<double> limit = measure ? parseDouble(value.substr(eq + 1)) : std::nullopt;
+                if (!measure || !limit || *limit < 0.0)
+                    return "--target expects MEASURE=LIMIT with a measure of --help and a limit >= 0, got '" + value + "'";
+                options.target = *measure;
+                options.targetLimit = *limit;
+            } else {
+                return "unknown option '" + arg + "'";
+            }
+            return std::nullopt;
+        });
+    options.scenePath = walk.scenePath;
+    if (!walk.stoppedAt.empty()) {
+        options.help = true;
+        return result;
     }
+    if (!walk.error.empty()) return fail(walk.error);
     if (options.mergeDir.empty() && options.scenePath.empty()) return fail("no scene given");
     if (!options.mergeDir.empty() && (!options.scenePath.empty() || !options.emitJobsPath.empty() || !options.point.empty()))
         return fail("--merge DIR takes no scene, --emit-jobs or --point: the plan in DIR names them");

@@ -12,6 +12,7 @@
 #include "accuracy/svg_plot.h"
 #include "sweep.h"
 
+#include "simcore/io/scene_io.h"
 #include "simcore/world/quality_preset.h"
 
 #include <algorithm>
@@ -48,6 +49,7 @@ using Clock = std::chrono::steady_clock;
 
 const char* usageText() {
     return "usage: interplay-bench-accuracy [--quick] [--out DIR] [--scene NAME]...\n"
+           "       interplay-bench-accuracy --save-scenes DIR [--scene NAME]...\n"
            "\n"
            "Sweeps the accuracy knobs (time step, substeps, velocity and position iterations, position\n"
            "correction, integrator, contact/joint stiffness, the scene's relevant effects) over reference\n"
@@ -60,12 +62,16 @@ const char* usageText() {
            "  --out DIR     where to write (default: bench/results in the source tree)\n"
            "  --scene NAME  run only this scene; repeatable. Names: incline-slide, rolling-sphere,\n"
            "                pendulum, elastic-collision, tumbling, tower-drift, pyramid-drift,\n"
-           "                mass-ratio-sink, chain-joint-error, pile-penetration\n";
+           "                mass-ratio-sink, chain-joint-error, pile-penetration\n"
+           "  --save-scenes DIR  writes each scene as built, before its first step, to DIR/NAME.json (a\n"
+           "                scene file, for interplay-sweep) and prints 'NAME.json SECONDS' per scene (the\n"
+           "                simulated time the full sweep runs it for), then exits\n";
 }
 
 struct Options {
     bool quick = false;
     fs::path out;
+    fs::path saveScenes;  // --save-scenes DIR
     std::vector<std::string> scenes;
 };
 
@@ -332,11 +338,23 @@ int run(const Options& options) {
             return 2;
         }
     }
+    const fs::path& dir = options.saveScenes.empty() ? options.out : options.saveScenes;
     std::error_code ec;
-    fs::create_directories(options.out, ec);
+    fs::create_directories(dir, ec);
     if (ec) {
-        std::cerr << "interplay-bench-accuracy: cannot create " << options.out << ": " << ec.message() << '\n';
+        std::cerr << "interplay-bench-accuracy: cannot create " << dir << ": " << ec.message() << '\n';
         return 2;
+    }
+    if (!options.saveScenes.empty()) {
+        for (const ReferenceScene* s : chosen) {
+            const std::string file = s->name + ".json";
+            if (auto error = simcore::saveSceneFile(accuracy::sceneFile(*s), dir / file)) {
+                std::cerr << "interplay-bench-accuracy: " << *error << '\n';
+                return 2;
+            }
+            std::cout << file << ' ' << s->seconds << '\n';
+        }
+        return 0;
     }
 
     const auto start = Clock::now();
@@ -479,10 +497,12 @@ int main(int argc, char** argv) {
         }
         if (arg == "--quick") {
             options.quick = true;
-        } else if ((arg == "--out" || arg == "--scene") && i + 1 < argc) {
+        } else if ((arg == "--out" || arg == "--scene" || arg == "--save-scenes") && i + 1 < argc) {
             if (arg == "--out") {
                 options.out = argv[++i];
                 outGiven = true;
+            } else if (arg == "--save-scenes") {
+                options.saveScenes = argv[++i];
             } else {
                 options.scenes.push_back(argv[++i]);
             }

@@ -3,11 +3,16 @@
 #include "support/scene_builders.h"
 #include "support/worlds.h"  // agm
 
+#include "simcore/world/debug_draw.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
+#include <optional>
+#include <stdexcept>
 #include <utility>
 
 namespace accuracy {
@@ -25,6 +30,7 @@ using simcore::World;
 using simcore::WorldSettings;
 
 void SteppingTimer::step(World& world) {
+    if (beforeFirstStep_) std::exchange(beforeFirstStep_, {})(world);
     const auto start = std::chrono::steady_clock::now();
     world.step();
     milliseconds_ += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -425,7 +431,79 @@ ReferenceScene pile() {
     return s;
 }
 
+// Each joint's frame now, in world coordinates, as JointCreationSettings reads it.
+class JointFrames final : public simcore::DebugDraw {
+public:
+    void drawJoint(const simcore::DebugJoint& joint) override { frames.push_back(joint); }
+    std::vector<simcore::DebugJoint> frames;
+};
+
+simcore::Scene sceneOf(const World& world) {
+    simcore::Scene scene;
+    scene.settings = world.settings();
+    const std::vector<BodyId> bodies = world.bodyIds();
+    // Files refer to jointed bodies by name, so a name the scene gives several bodies is numbered.
+    std::map<std::string, int> uses, seen;
+    for (BodyId id : bodies) ++uses[world.name(id)];
+    for (BodyId id : bodies) {
+        BodyCreationSettings b;
+        b.name = world.name(id);
+        if (uses[b.name] > 1) b.name += "-" + std::to_string(++seen[b.name]);
+        b.shape = world.shape(id);
+        b.motion = world.motionType(id);
+        b.position = world.position(id);
+        b.orientation = world.orientation(id);
+        b.linearVelocity = world.linearVelocity(id);
+        b.angularVelocity = world.angularVelocity(id);
+        if (b.motion == MotionType::Dynamic) b.mass = world.mass(id);
+        b.density = world.density(id);
+        b.friction = world.friction(id);
+        b.restitution = world.restitution(id);
+        b.rollingResistance = world.rollingResistance(id);
+        b.ccd = world.ccdEnabled(id);
+        scene.bodies.push_back({std::move(b), std::nullopt});
+    }
+    auto indexOf = [&bodies](BodyId id) {
+        return static_cast<std::size_t>(std::find(bodies.begin(), bodies.end(), id) - bodies.begin());
+    };
+    JointFrames frames;
+    simcore::DebugDrawOptions options;
+    options.bodies = false;
+    options.joints = true;
+    world.draw(frames, options);
+    for (const simcore::DebugJoint& frame : frames.frames) {
+        simcore::SceneJoint joint;
+        JointCreationSettings& j = joint.joint;
+        j.name = world.jointName(frame.id);
+        j.type = frame.type;
+        j.anchor = frame.anchorA;
+        j.anchorB = frame.anchorB;
+        j.axis = frame.axis;
+        j.limits = world.jointLimits(frame.id);
+        j.motor = world.jointMotor(frame.id);
+        j.spring = world.jointSpring(frame.id);
+        if (frame.type == JointType::Distance) {
+            const simcore::DistanceLengths lengths = world.jointLengths(frame.id);
+            j.minLength = lengths.min;
+            j.maxLength = lengths.max;
+        }
+        j.collideConnected = world.jointCollidesConnected(frame.id);
+        joint.bodyA = indexOf(frame.bodyA);
+        if (frame.bodyB.isValid()) joint.bodyB = indexOf(frame.bodyB);
+        scene.joints.push_back(std::move(joint));
+    }
+    return scene;
+}
+
 }  // namespace
+
+simcore::Scene sceneFile(const ReferenceScene& scene) {
+    std::optional<simcore::Scene> built;
+    SteppingTimer timer([&built](const World& world) { built = sceneOf(world); });
+    scene.run(scene.base, static_cast<double>(scene.base.timeStep), timer);  // one step
+    if (!built) throw std::logic_error(scene.name + ": its run did not step the world");
+    return std::move(*built);
+}
 
 std::vector<ReferenceScene> referenceScenes() {
     return {inclineSlide(), inclineRoll(), pendulum(), elasticCollision(), tumbling(),

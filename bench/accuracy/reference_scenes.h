@@ -3,6 +3,7 @@
 // World API, steps it, and turns what it observed into one error number against a known answer:
 // a closed form where physics gives one, otherwise a converged run of the same scene.
 
+#include "simcore/io/scene.h"
 #include "simcore/world/world.h"
 #include "simcore/world_settings.h"
 
@@ -16,10 +17,14 @@ namespace accuracy {
 // (zero crossings, joint errors, penetration) is not charged to the engine.
 class SteppingTimer {
 public:
+    // `beforeFirstStep`, when given, sees the world as the scene built it, just before its first step.
+    explicit SteppingTimer(std::function<void(const simcore::World&)> beforeFirstStep = {})
+        : beforeFirstStep_(std::move(beforeFirstStep)) {}
     void step(simcore::World& world);
     double milliseconds() const { return milliseconds_; }
 
 private:
+    std::function<void(const simcore::World&)> beforeFirstStep_;
     double milliseconds_ = 0.0;
 };
 
@@ -54,5 +59,10 @@ struct ReferenceScene {
 };
 
 std::vector<ReferenceScene> referenceScenes();
+
+// The scene as its `run` builds it at its base settings, before the first step, as a scene file
+// holds it: what interplay-sweep is given to sweep the same scene. Bodies come from the world's
+// getters, joints' frames from World::draw (their anchors and axes as creation reads them).
+simcore::Scene sceneFile(const ReferenceScene& scene);
 
 }  // namespace accuracy
