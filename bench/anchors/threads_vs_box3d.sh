@@ -8,6 +8,7 @@
 # env:   ANCHORS=../shared/anchors (the harness sources)  ANCHORS_DIR=${TMPDIR:-/tmp}/interplay-anchors
 #        SCENES="pile1k mixed1k pyramid pyramid20"  REPEATS=3
 # Prints one line per run (ENGINE= THREADS= REP= and the harness's figures), then the medians.
+# THREADS is what ran: interplay_anchor.py's own line says threads=1 whatever its runner adds.
 set -uo pipefail
 
 IRUN=$(realpath "${1:-build/app/interplay-run}")
