@@ -1,5 +1,5 @@
 // The task pool and the multi-threaded step: the pool splits work into fixed chunks and runs every
-// one exactly once; a world gives the same bits for 1, 2 and 4 threads on the benchmark scenes and
+// one exactly once, waking workers that went to sleep; a world gives the same bits for 1, 2 and 4 threads on every benchmark scene and
 // on jointed scenes (bodies and contacts compared after every step); and a step with worker
 // threads allocates nothing once the contact set is steady.
 
@@ -12,11 +12,15 @@
 
 #include <QtTest>
 
+#include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cstring>
 #include <filesystem>
+#include <map>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 using namespace simcore;
@@ -89,6 +93,7 @@ private slots:
     void poolRunsEveryChunkOnce_data();
     void poolRunsEveryChunkOnce();
     void poolSumsInChunkOrder();
+    void poolWakesSleepingWorkers();
     void stepIsBitIdenticalForAnyThreadCount_data();
     void stepIsBitIdenticalForAnyThreadCount();
     void changingThreadsMidRunChangesNothing();
@@ -144,17 +149,42 @@ void TestThreads::poolSumsInChunkOrder() {
     }
 }
 
+// Idle workers spin a short while and then sleep: jobs that come after a pause longer than the spin
+// must wake them (a lost wake-up would hang here, or leave chunks unrun).
+void TestThreads::poolWakesSleepingWorkers() {
+    TaskPool pool(3);
+    constexpr std::size_t kCount = 300, kGrain = 10;
+    for (int round = 0; round < 10; ++round) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(round % 2 == 0 ? 2 : 0));
+        std::vector<std::atomic<int>> visits(kCount);
+        pool.parallelFor(kCount, kGrain, [&](std::size_t, std::size_t begin, std::size_t end) {
+            for (std::size_t i = begin; i < end; ++i) visits[i].fetch_add(1);
+        });
+        for (std::size_t i = 0; i < kCount; ++i) QCOMPARE(visits[i].load(), 1);
+    }
+}
+
 void TestThreads::stepIsBitIdenticalForAnyThreadCount_data() {
     QTest::addColumn<QString>("scene");
     QTest::addColumn<int>("steps");
     // Short enough for the suite to stay under a minute on a busy two-core machine (and a few
     // times shorter under ThreadSanitizer), long enough for stacks to settle and piles to collide.
+    // Every scene in scenes/bench, so a new benchmark scene is covered without a new row; one not
+    // listed here runs kOtherBenchSteps.
     const int scale = test_support::kSanitized ? 5 : 1;
-    QTest::newRow("pile1k") << "scenes/bench/pile1k.json" << 240 / scale;
-    QTest::newRow("mixed1k") << "scenes/bench/mixed1k.json" << 120 / scale;
-    QTest::newRow("pyramid10") << "scenes/bench/pyramid10.json" << 60 / scale;
-    QTest::newRow("pyramid20") << "scenes/bench/pyramid20.json" << 30 / scale;
-    QTest::newRow("tower20") << "scenes/bench/tower20.json" << 120 / scale;
+    const std::map<std::string, int> benchSteps{
+        {"pile1k", 240}, {"mixed1k", 120}, {"pyramid10", 60}, {"pyramid20", 30}, {"tower20", 120}};
+    constexpr int kOtherBenchSteps = 60;
+    std::vector<std::string> benchScenes;
+    for (const auto& entry : std::filesystem::directory_iterator(kSourceDir / "scenes/bench"))
+        if (entry.path().extension() == ".json") benchScenes.push_back(entry.path().stem().string());
+    std::sort(benchScenes.begin(), benchScenes.end());
+    QVERIFY2(benchScenes.size() >= 5, "scenes/bench has lost its scenes");
+    for (const std::string& name : benchScenes) {
+        const auto known = benchSteps.find(name);
+        const int steps = known != benchSteps.end() ? known->second : kOtherBenchSteps;
+        QTest::newRow(name.c_str()) << QString::fromStdString("scenes/bench/" + name + ".json") << steps / scale;
+    }
     QTest::newRow("chain20 (joints)") << "scenes/chain20.json" << 240 / scale;
     QTest::newRow("ragdoll (joints)") << "scenes/ragdoll.json" << 240 / scale;
 }

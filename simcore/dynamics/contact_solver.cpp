@@ -351,13 +351,24 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const BodyStor
         std::fill(std::begin(batches_[k].storeB), std::end(batches_[k].storeB), scratchRow);
     }
 
+    // Which constraint fills each lane (in order_), so that the batches can be filled side by side.
+    laneConstraint_.assign(batches_.size() * kLanes, kNoConstraint);
     for (std::size_t k = 0; k < order_.size(); ++k) {
-        const std::uint32_t ci = order_[k];
         const int color = colorOf_[k];
         const std::uint32_t lanes = color == kOverflow ? 1 : kLanes;
         const std::uint32_t slot = filled[color]++;
-        ManifoldBatch& batch = batches_[colorFirstBatch_[color] + slot / lanes];
-        const int lane = static_cast<int>(slot % lanes);
+        laneConstraint_[(colorFirstBatch_[color] + slot / lanes) * kLanes + slot % lanes] = static_cast<std::uint32_t>(k);
+    }
+
+    // Each batch is filled from its own lanes' contacts, then gets its effective masses: in
+    // parallel. Every solver body exists by now, so solverBody only looks them up.
+    batchPenetration_.assign(batches_.size(), 0.0f);
+    pool.parallelFor(batches_.size(), kBatchGrain, [&](std::size_t, std::size_t beginBatch, std::size_t endBatch) {
+    for (std::size_t entry = beginBatch * kLanes; entry < endBatch * kLanes; ++entry) {
+        if (laneConstraint_[entry] == kNoConstraint) continue;
+        const std::uint32_t ci = order_[laneConstraint_[entry]];
+        ManifoldBatch& batch = batches_[entry / kLanes];
+        const int lane = static_cast<int>(entry % kLanes);
 
         const Contact& contact = contacts[ci];
         const ContactManifold& manifold = contact.manifold;
@@ -401,8 +412,6 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const BodyStor
         batch.restitution.setLane(lane, restitution);
         batch.anyFriction = batch.anyFriction || friction > 0.0f;
         batch.anyRestitution = batch.anyRestitution || restitution > 0.0f;
-        usesFriction_ = usesFriction_ || friction > 0.0f;
-        usesRestitution_ = usesRestitution_ || restitution > 0.0f;
         // Rolling resistance belongs to the friction effect: off with it.
         const float rollingLever = params.friction ? contact.rollingLever : 0.0f;
         if (rollingLever > 0.0f) {
@@ -410,7 +419,6 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const BodyStor
             setLanes(batch.rollingMass, lane, rollingMass(inverseInertiaA, inverseInertiaB));
             setLanes(batch.rollingImpulse, lane, contact.frictionImpulse.rolling);
             batch.anyRolling = true;
-            usesFriction_ = true;
         }
 
         setLanes(batch.centerA, lane, centre - bodies.centerOfMass[a]);
@@ -433,14 +441,16 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const BodyStor
             p.baseSeparation.setLane(lane, mp.separation);
             p.leverArm.setLane(lane, glm::length(mid - centre));
             p.normalImpulse.setLane(lane, contact.impulses[i].normal);
-            maxPenetration_ = std::max(maxPenetration_, -mp.separation);
+            batchPenetration_[entry / kLanes] = std::max(batchPenetration_[entry / kLanes], -mp.separation);
         }
     }
-
-    // Effective masses, a batch at a time (each on its own: in parallel).
-    pool.parallelFor(batches_.size(), kBatchGrain, [this](std::size_t, std::size_t begin, std::size_t end) {
-        for (std::size_t k = begin; k < end; ++k) computeEffectiveMasses(batches_[k]);
+    for (std::size_t k = beginBatch; k < endBatch; ++k) computeEffectiveMasses(batches_[k]);
     });
+    for (std::size_t k = 0; k < batches_.size(); ++k) {
+        usesFriction_ = usesFriction_ || batches_[k].anyFriction || batches_[k].anyRolling;
+        usesRestitution_ = usesRestitution_ || batches_[k].anyRestitution;
+        maxPenetration_ = std::max(maxPenetration_, batchPenetration_[k]);
+    }
 
     velocities_.assign(references_.size() + batches_.size(), BodyRow{});
     motion_.assign(references_.size(), BodyRow{});

@@ -165,6 +165,9 @@ private:
     std::vector<std::uint64_t> bodyColors_;    // scratch: colours used at each solver body
     std::vector<std::uint32_t> order_;         // scratch: constraints sorted by colour
     std::vector<std::uint8_t> colorOf_;        // scratch
+    static constexpr std::uint32_t kNoConstraint = ~std::uint32_t{0};
+    std::vector<std::uint32_t> laneConstraint_;  // scratch: by batch and lane, an index into order_
+    std::vector<float> batchPenetration_;        // scratch: by batch, its points' deepest overlap (m)
     Params params_;
     SoftConstraint soft_;  // overlap correction of the position-correcting passes
     float maxPenetration_ = 0.0f;

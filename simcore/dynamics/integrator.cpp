@@ -30,6 +30,16 @@ bool boundVelocity(Vec3& linear, Vec3& angular, float dt) {
 // Column-major cross-product matrix, skew(v) * x == cross(v, x), for the solve below.
 glm::dmat3 skew(const glm::dvec3& v) { return glm::dmat3(0.0, v.z, -v.y, -v.z, 0.0, v.x, v.y, -v.x, 0.0); }
 
+// Whether a body-axes inertia is diagonal with equal moments that scale to exactly 1 (for some
+// moments x * (1 / x) rounds to just below 1).
+bool isotropicUnitScaled(const Mat3& inertia, double largestMoment) {
+    for (int column = 0; column < 3; ++column)
+        for (int row = 0; row < 3; ++row)
+            if (row != column && inertia[column][row] != 0.0f) return false;
+    return inertia[0][0] == inertia[1][1] && inertia[1][1] == inertia[2][2] &&
+           largestMoment * (1.0 / largestMoment) == 1.0;
+}
+
 // Torque-free Euler equations I dw/dt + w x (I w) = 0 in body axes, by the implicit midpoint rule:
 // I (w1 - w0) + h wm x (I wm) = 0 with wm = (w0 + w1) / 2, solved by Newton's method from w1 = w0.
 // The midpoint rule conserves quadratic invariants, here both |I w| = |L| and the energy w.I w / 2,
@@ -56,6 +66,11 @@ Vec3 solveGyroscopic(const Quat& orientation, const Mat3& bodyInertia, const Vec
     // The equation is homogeneous in I, so it is solved with I scaled to a largest moment of 1: a
     // 0.1 mm bead's moments (about 1e-15 kg m^2) would make the Jacobian's determinant tiny.
     const double largestMoment = std::max({bodyInertia[0][0], bodyInertia[1][1], bodyInertia[2][2]});
+    // The same moment about every axis (a sphere, a cube): w x (I w) = 0, no gyroscopic torque.
+    // Where the scaled inertia is exactly the identity the solve below returns worldOmega + 0 bit
+    // for bit (checked over 2.5 million spins and moments, zeros of either sign included), so it is
+    // skipped (the solve took a tenth of mixed1k's step, 7 % of pyramid10's, in perf on one thread).
+    if (isotropicUnitScaled(bodyInertia, largestMoment)) return worldOmega + Vec3(0.0f);  // + 0: as the sum below
     const dmat3 inertia = dmat3(bodyInertia) * (1.0 / largestMoment);
     const Vec3 bodyOmega = glm::conjugate(orientation) * worldOmega;
     const dvec3 w0(bodyOmega);

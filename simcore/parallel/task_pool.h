@@ -4,8 +4,9 @@
 // a chunk varies from call to call, the chunks do not, so a stage whose chunks write disjoint data
 // and whose reductions are combined in chunk order gives the same bits for any thread count.
 //
-// One pool runs one parallelFor at a time and a call returns only when every chunk has run. It
-// allocates when created (and parallelSum when a range has more chunks than ever before), never
+// Idle workers spin briefly (the jobs of a step come microseconds apart), then sleep on a condition
+// variable until the next job. One pool runs one parallelFor at a time and a call returns only
+// when every chunk has run. It allocates when created (and parallelSum when a range has more chunks than ever before), never
 // otherwise, so a step in steady state allocates nothing.
 
 #include <algorithm>
@@ -74,16 +75,23 @@ private:
     void run(const Job& job);
     void workerLoop();
     void runChunks();  // takes chunks of the current job until none is left
+    // Waits until generation_ differs from `seen` (or the pool stops): spinning first, since a
+    // step's jobs follow each other within microseconds, then asleep. Returns the generation.
+    std::uint64_t awaitGeneration(std::uint64_t seen);
 
     std::vector<std::thread> workers_;
     std::vector<std::uint64_t> chunkSums_;  // parallelSum's, by chunk; reused
-    std::mutex mutex_;
-    std::condition_variable wake_, finished_;
-    Job job_;                                // written by run() only while no worker is in a job
-    std::uint64_t generation_ = 0;           // guarded by mutex_: odd while a job is open to workers
+    Job job_;  // written by run() only while no worker is in a job
+    // Odd while a job is open to workers. A worker joins by counting itself in busyWorkers_ and
+    // then finding the generation unchanged; run() closes the job and then waits for busyWorkers_
+    // to reach zero, so it never misses a worker that joined (both sides are sequentially consistent).
+    std::atomic<std::uint64_t> generation_{0};
     std::atomic<std::size_t> nextChunk_{0};  // the next chunk nobody has taken yet
-    int busyWorkers_ = 0;  // guarded by mutex_: workers that joined the current job and have not left
-    bool stopping_ = false;
+    std::atomic<int> busyWorkers_{0};        // workers in the current job
+    std::atomic<int> sleepingWorkers_{0};    // workers blocked on wake_ (changed under mutex_)
+    std::atomic<bool> stopping_{false};
+    std::mutex mutex_;  // only for sleeping and waking
+    std::condition_variable wake_;
 };
 
 }  // namespace simcore
