@@ -4,7 +4,6 @@
 #include <array>
 #include <bit>
 #include <cmath>
-#include <utility>
 
 namespace simcore {
 
@@ -36,16 +35,6 @@ void frictionAxes(const Vec3& n, const Vec3& centre, const BodyStorage& bodies, 
     } else {
         orthonormalBasis(n, t1, t2);
     }
-}
-
-// Where a contact point acts on each body (world): on the body's own surface while the surfaces are
-// apart, and both at the middle of the overlap once they overlap. A speculative contact's gap can be
-// a metre (the margin grows with the approach speed), and anchors midway, half a metre below a bar
-// thrown flat at the floor, gave its friction that lever: the bar left sideways at 2 m/s and rose at
-// 0.76 m/s with restitution 0.
-std::pair<Vec3, Vec3> contactAnchors(const ContactPoint& point, const Vec3& normal) {
-    const Vec3 halfOverlap = (0.5f * std::min(point.separation, 0.0f)) * normal;
-    return {point.pointA + halfOverlap, point.pointB - halfOverlap};
 }
 
 float roundingRadius(const Shape& shape) {
@@ -164,14 +153,13 @@ SIMCORE_SIMD_INLINE PairMotionW gatherMotion(const float* rows, const std::int32
             RotationDeltaW(b[4], b[5], b[6], b[7])};
 }
 
-// A point's separation now. Each anchor sits on its body's surface at prepare, or mid-overlap where
-// the bodies overlap (contactAnchors), and each core (centre or segment) a rounding radius further
-// in along the normal.
+// A point's separation now. The anchors sit mid-gap at prepare; each body's surface is half the
+// gap away along the normal and its core (centre or segment) a rounding radius further.
 SIMCORE_SIMD_INLINE FloatW separationNow(const PairMotionW& motion, const Vec3W& normal, const Vec3W& anchorA,
                                          const Vec3W& anchorB, FloatW baseSeparation, FloatW radiusA, FloatW radiusB) {
-    const FloatW halfOverlap = FloatW::splat(0.5f) * simd::min(baseSeparation, FloatW::zero());
-    const Vec3W coreA = mulAdd(normal, -(halfOverlap + radiusA), anchorA);
-    const Vec3W coreB = mulAdd(normal, halfOverlap + radiusB, anchorB);
+    const FloatW halfGap = FloatW::splat(0.5f) * baseSeparation;
+    const Vec3W coreA = mulAdd(normal, -(halfGap + radiusA), anchorA);
+    const Vec3W coreB = mulAdd(normal, halfGap + radiusB, anchorB);
     const Vec3W d = motion.shift + motion.turnB * coreB - motion.turnA * coreA;
     return baseSeparation + dot(d, normal);
 }
@@ -394,16 +382,10 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const BodyStor
         setLanes(batch.inverseInertiaA, lane, inverseInertiaA);
         setLanes(batch.inverseInertiaB, lane, inverseInertiaB);
 
-        // The friction centre on each body: the mean of its anchors.
-        Vec3 centreA(0.0f), centreB(0.0f);
-        for (int i = 0; i < manifold.pointCount; ++i) {
-            const std::pair<Vec3, Vec3> anchors = contactAnchors(manifold.points[i], manifold.normal);
-            centreA += anchors.first;
-            centreB += anchors.second;
-        }
-        centreA /= static_cast<float>(manifold.pointCount);
-        centreB /= static_cast<float>(manifold.pointCount);
-        const Vec3 centre = 0.5f * (centreA + centreB);
+        // The friction centre: the mean of the points, each midway between the surfaces.
+        Vec3 centre(0.0f);
+        for (int i = 0; i < manifold.pointCount; ++i) centre += manifold.points[i].pointA + manifold.points[i].pointB;
+        centre *= 0.5f / static_cast<float>(manifold.pointCount);
         const Vec3& normal = manifold.normal;
         Vec3 tangent1, tangent2;
         frictionAxes(normal, centre, bodies, a, b, tangent1, tangent2);
@@ -431,8 +413,8 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const BodyStor
             usesFriction_ = true;
         }
 
-        setLanes(batch.centerA, lane, centreA - bodies.centerOfMass[a]);
-        setLanes(batch.centerB, lane, centreB - bodies.centerOfMass[b]);
+        setLanes(batch.centerA, lane, centre - bodies.centerOfMass[a]);
+        setLanes(batch.centerB, lane, centre - bodies.centerOfMass[b]);
         if (friction > 0.0f) {
             batch.tangentImpulse1.setLane(lane, glm::dot(contact.frictionImpulse.linear, tangent1));
             batch.tangentImpulse2.setLane(lane, glm::dot(contact.frictionImpulse.linear, tangent2));
@@ -441,15 +423,15 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const BodyStor
         for (int i = 0; i < manifold.pointCount; ++i) {
             const ContactPoint& mp = manifold.points[i];
             PointBatch& p = batch.points[i];
-            // The separation's change is the change of (anchorB - anchorA) along the normal as the
-            // bodies move.
-            const std::pair<Vec3, Vec3> anchors = contactAnchors(mp, normal);
-            const Vec3 anchorA = anchors.first - bodies.centerOfMass[a];
-            const Vec3 anchorB = anchors.second - bodies.centerOfMass[b];
+            // Both anchors at the midpoint: then the separation's change is just the change of
+            // (anchorB - anchorA) along the normal as the bodies move.
+            const Vec3 mid = 0.5f * (mp.pointA + mp.pointB);
+            const Vec3 anchorA = mid - bodies.centerOfMass[a];
+            const Vec3 anchorB = mid - bodies.centerOfMass[b];
             setLanes(p.anchorA, lane, anchorA);
             setLanes(p.anchorB, lane, anchorB);
             p.baseSeparation.setLane(lane, mp.separation);
-            p.leverArm.setLane(lane, glm::length(0.5f * (anchors.first + anchors.second) - centre));
+            p.leverArm.setLane(lane, glm::length(mid - centre));
             p.normalImpulse.setLane(lane, contact.impulses[i].normal);
             maxPenetration_ = std::max(maxPenetration_, -mp.separation);
         }
