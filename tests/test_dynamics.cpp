@@ -4,11 +4,15 @@
 // that discrete answer (to float rounding) and the bound |error| <= 1/2 |g| h t against the
 // continuous one.
 
+#include "simcore/io/scene_io.h"
 #include "simcore/world/world.h"
 
 #include <QtTest>
 
+#include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
 
 using namespace simcore;
 
@@ -53,6 +57,7 @@ private slots:
     void impulseChangesMomentumAndAngularMomentum();
     void staleHandlesAreDetected();
     void restingBodyFallsAsleepAndWakesOnImpulse();
+    void mixedPileSleepsWithinTenSeconds();
     void disabledOrUnneededEffectsDoNotRun();
     void invalidCreationSettingsAreRejectedByName_data();
     void invalidCreationSettingsAreRejectedByName();
@@ -318,6 +323,33 @@ void TestDynamics::restingBodyFallsAsleepAndWakesOnImpulse() {
     QVERIFY(world.isAwake(id));
     world.step();
     QVERIFY(world.position(id).x > 0.0f);
+}
+
+// scenes/bench/mixed1k.json (1000 spheres, capsules, cylinders and boxes dropped in a grid, no
+// rolling resistance) at the defaults: every body asleep within 10 s, as in Box3D (issue 12).
+void TestDynamics::mixedPileSleepsWithinTenSeconds() {
+    const SceneLoadResult loaded = loadSceneFile(std::string(INTERPLAY_SOURCE_DIR) + "/scenes/bench/mixed1k.json");
+    QVERIFY(loaded.ok());
+    WorldSettings defaults;
+    defaults.gravity = loaded.scene->settings.gravity;
+    defaults.timeStep = loaded.scene->settings.timeStep;
+    QVERIFY(loaded.scene->settings == defaults);
+    World world(loaded.scene->settings);
+    std::vector<BodyId> dynamic;
+    for (const SceneBody& b : loaded.scene->bodies) {
+        const BodyId id = world.createBody(b.body);
+        if (b.body.motion == MotionType::Dynamic) dynamic.push_back(id);
+    }
+    QCOMPARE(dynamic.size(), std::size_t{1000});
+    auto awake = [&] { return std::count_if(dynamic.begin(), dynamic.end(), [&](BodyId id) { return world.isAwake(id); }); };
+    const int limit = static_cast<int>(std::lround(10.0f / world.settings().timeStep));
+    int step = 0;
+    while (step < limit && awake() > 0) {
+        world.step();
+        ++step;
+    }
+    qInfo("mixed1k: %d of 1000 awake after %.2f s", static_cast<int>(awake()), step * world.settings().timeStep);
+    QCOMPARE(awake(), 0);
 }
 
 void TestDynamics::disabledOrUnneededEffectsDoNotRun() {

@@ -29,6 +29,10 @@ constexpr float kEdgeAbsoluteTolerance = 0.5f * kLinearSlop;  // ...plus this
 constexpr float kFaceRelativeTolerance = 0.02f;       // B's face must beat A's face by 2% (plus this)
 constexpr float kFaceAbsoluteTolerance = 0.1f * kLinearSlop;
 constexpr float kFaceAlignment = 0.98f;               // cos(~11°): feature counts as lying flat on a face
+// cos(~18°): an edge pair whose faces are this close to flat on each other takes the face manifold
+// (faceManifoldServes); at kFaceAlignment, a bar rolling over another's edge at 10° a step still
+// reached the next face a centimetre deep.
+constexpr float kFlatPairAlignment = 0.95f;
 constexpr float kLineParallel = 0.1f;                 // |cos| below which a segment lies along a face
 
 constexpr int kMaxClipVertices = 64;  // clipping polygons and contact candidates
@@ -267,6 +271,19 @@ void collideBoxSphere(const Shape& a, const Transform& ta, const Shape& b, const
     if (separation > spec) return;
     contacts.normal = ta.rotate(localNormal);
     contacts.add(ta.apply(onBox), tb.position - b.radius * contacts.normal, separation, 0);
+}
+
+// An edge pair can win the SAT while the faces either side of the contact lie nearly flat on each
+// other (the incident face within kFlatPairAlignment of the reference face): a bar landing across
+// another, slightly turned, or nearly parallel edges, whose cross product may point anywhere. One
+// edge point lets the body pivot onto the rest of its face within a step (Box3D's Edge Crossing
+// went 3.9 cm deep), so such a pair takes the face manifold, whose clipped points hold the edge
+// crossing and give the rest of the face speculative points - unless it is deeper than the edge
+// point by more than the slop: then the faces overlap only beside each other and its depth is not
+// the bodies'. Returns whether `face` replaces `edge`.
+bool faceManifoldServes(float incidentAlignment, const Contacts& face, const Contacts& edge) {
+    return incidentAlignment >= kFlatPairAlignment && face.count > 0 &&
+           face.deepestSeparation() >= edge.deepestSeparation() - kLinearSlop;
 }
 
 // ---- Polyhedra: box and hull through one view -----------------------------------------------------
@@ -689,6 +706,36 @@ void collideBoxBox(const Shape& a, const Transform& ta, const Shape& b, const Tr
     const float bestFace = std::max(faceASeparation, faceBSeparation);
     const bool edgeWins = edgeI >= 0 &&
         edgeSeparation > bestFace + kEdgeRelativeTolerance * std::abs(bestFace) + kEdgeAbsoluteTolerance;
+    const bool referenceIsA =
+        !(faceBSeparation > faceASeparation + kFaceRelativeTolerance * std::abs(faceASeparation) + kFaceAbsoluteTolerance);
+    // Incident box seen from the reference box: m[j] = incident axis j, p = incident centre.
+    Mat3 m;
+    Vec3 p;
+    if (referenceIsA) {
+        for (int j = 0; j < 3; ++j) m[j] = Vec3(c[0][j], c[1][j], c[2][j]);
+        p = t;
+    } else {
+        for (int j = 0; j < 3; ++j) m[j] = Vec3(c[j][0], c[j][1], c[j][2]);
+        p = u;
+    }
+    const Vec3& hRef = referenceIsA ? hA : hB;
+    const Vec3& hInc = referenceIsA ? hB : hA;
+    const Mat3& rRef = referenceIsA ? ra : rb;
+    const Vec3& refPosition = referenceIsA ? ta.position : tb.position;
+    const int refFace = referenceIsA ? faceA : faceB;
+    const int k = refFace >> 1;
+    const float sign = (refFace & 1) == 0 ? 1.0f : -1.0f;
+
+    // Incident face: the most anti-parallel to the reference normal (first best in face order).
+    int incFace = 0;
+    float incidentAlignment = -std::numeric_limits<float>::max();
+    for (int j = 0; j < 3; ++j) {
+        const float along = -sign * m[j][k];  // incident axis j against the reference normal
+        if (along > incidentAlignment) incidentAlignment = along, incFace = 2 * j;
+        if (-along > incidentAlignment) incidentAlignment = -along, incFace = 2 * j + 1;
+    }
+
+    Contacts edge;  // the edge pair's point, when the edge axis wins
     if (edgeWins) {
         const Vec3 n = glm::dot(edgeAxis, t) >= 0.0f ? edgeAxis : -edgeAxis;  // A's frame, A to B
         // A's edge along axis i farthest along n; B's edge along axis j farthest along -n.
@@ -713,44 +760,16 @@ void collideBoxBox(const Shape& a, const Transform& ta, const Shape& b, const Tr
         Vec3 onA, onB;
         closestPointsOfSegments(ta.position + ra * p0, ta.position + ra * p1, tb.position + rb * q0,
                                 tb.position + rb * q1, onA, onB);
-        contacts.normal = ra * n;
-        const float separation = glm::dot(onB - onA, contacts.normal);
+        edge.normal = ra * n;
+        const float separation = glm::dot(onB - onA, edge.normal);
         if (separation <= spec) {
             const std::uint32_t edgeA = std::uint32_t(4 * edgeI + (posU ? 1 : 0) + (posV ? 2 : 0));
             const std::uint32_t edgeB = std::uint32_t(4 * edgeJ + (posUB ? 1 : 0) + (posVB ? 2 : 0));
-            contacts.add(onA, onB, separation, 0x40000000u | (edgeA << 12) | edgeB);
+            edge.add(onA, onB, separation, 0x40000000u | (edgeA << 12) | edgeB);
         }
-        return;
-    }
-
-    const bool referenceIsA =
-        !(faceBSeparation > faceASeparation + kFaceRelativeTolerance * std::abs(faceASeparation) + kFaceAbsoluteTolerance);
-    // Incident box seen from the reference box: m[j] = incident axis j, p = incident centre.
-    Mat3 m;
-    Vec3 p;
-    if (referenceIsA) {
-        for (int j = 0; j < 3; ++j) m[j] = Vec3(c[0][j], c[1][j], c[2][j]);
-        p = t;
-    } else {
-        for (int j = 0; j < 3; ++j) m[j] = Vec3(c[j][0], c[j][1], c[j][2]);
-        p = u;
-    }
-    const Vec3& hRef = referenceIsA ? hA : hB;
-    const Vec3& hInc = referenceIsA ? hB : hA;
-    const Mat3& rRef = referenceIsA ? ra : rb;
-    const Vec3& refPosition = referenceIsA ? ta.position : tb.position;
-    const int refFace = referenceIsA ? faceA : faceB;
-    const int k = refFace >> 1;
-    const float sign = (refFace & 1) == 0 ? 1.0f : -1.0f;
-
-    // Incident face: the most anti-parallel to the reference normal (first best in face order).
-    int incFace = 0;
-    {
-        float alignment = -std::numeric_limits<float>::max();
-        for (int j = 0; j < 3; ++j) {
-            const float along = -sign * m[j][k];  // incident axis j against the reference normal
-            if (along > alignment) alignment = along, incFace = 2 * j;
-            if (-along > alignment) alignment = -along, incFace = 2 * j + 1;
+        if (incidentAlignment < kFlatPairAlignment) {
+            contacts = edge;
+            return;
         }
     }
 
@@ -806,6 +825,10 @@ void collideBoxBox(const Shape& a, const Transform& ta, const Shape& b, const Tr
             contacts.add(worldIncident, worldReference, separation, idBase | in[i].id);
         }
     }
+    if (edgeWins) {
+        if (!faceManifoldServes(incidentAlignment, contacts, edge)) contacts = edge;
+        return;
+    }
     if (contacts.count == 0) collideGeneric(a, ta, b, tb, spec, contacts);
 }
 
@@ -826,22 +849,6 @@ void collidePolyhedra(const Shape& a, const Transform& ta, const Shape& b, const
     const float bestFace = std::max(faceA.separation, faceB.separation);
     const bool edgeWins = edges.edgeA >= 0 &&
         edges.separation > bestFace + kEdgeRelativeTolerance * std::abs(bestFace) + kEdgeAbsoluteTolerance;
-    if (edgeWins) {
-        Vec3 p0, p1, q0, q1;
-        int unused0, unused1;
-        polyA.edge(edges.edgeA, p0, p1, unused0, unused1);
-        polyB.edge(edges.edgeB, q0, q1, unused0, unused1);
-        Vec3 onA, onB;
-        closestPointsOfSegments(ta.apply(p0), ta.apply(p1), tb.apply(q0), tb.apply(q1), onA, onB);
-        contacts.normal = ta.rotate(edges.normal);
-        const float separation = glm::dot(onB - onA, contacts.normal);
-        if (separation <= spec) {
-            contacts.add(onA, onB, separation,
-                         0x40000000u | (std::uint32_t(edges.edgeA & 0xFFF) << 12) | std::uint32_t(edges.edgeB & 0xFFF));
-        }
-        return;
-    }
-
     const bool referenceIsA =
         !(faceB.separation > faceA.separation + kFaceRelativeTolerance * std::abs(faceA.separation) + kFaceAbsoluteTolerance);
     const Polyhedron& refPoly = referenceIsA ? polyA : polyB;
@@ -853,6 +860,27 @@ void collidePolyhedra(const Shape& a, const Transform& ta, const Shape& b, const
     const ReferenceFace ref = referenceFace(refPoly, refT, refFaceIndex);
     const int incFace = incPoly.incidentFace(incT, ref.normal);
 
+    const float incidentAlignment = -glm::dot(incT.rotate(incPoly.faceNormal(incFace)), ref.normal);
+    Contacts edge;  // the edge pair's point, when the edge axis wins
+    if (edgeWins) {
+        Vec3 p0, p1, q0, q1;
+        int unused0, unused1;
+        polyA.edge(edges.edgeA, p0, p1, unused0, unused1);
+        polyB.edge(edges.edgeB, q0, q1, unused0, unused1);
+        Vec3 onA, onB;
+        closestPointsOfSegments(ta.apply(p0), ta.apply(p1), tb.apply(q0), tb.apply(q1), onA, onB);
+        edge.normal = ta.rotate(edges.normal);
+        const float separation = glm::dot(onB - onA, edge.normal);
+        if (separation <= spec) {
+            edge.add(onA, onB, separation,
+                         0x40000000u | (std::uint32_t(edges.edgeA & 0xFFF) << 12) | std::uint32_t(edges.edgeB & 0xFFF));
+        }
+        if (incidentAlignment < kFlatPairAlignment) {
+            contacts = edge;
+            return;
+        }
+    }
+
     ClipPolygon polygon;
     const int incCount = std::min(incPoly.faceVertexCount(incFace), kMaxClipVertices);
     for (int i = 0; i < incCount; ++i) polygon[i] = {incT.apply(incPoly.faceVertex(incFace, i)), std::uint32_t(i)};
@@ -861,6 +889,10 @@ void collidePolyhedra(const Shape& a, const Transform& ta, const Shape& b, const
     const std::uint32_t idBase = (referenceIsA ? 0u : 0x80000000u) | (std::uint32_t(refFaceIndex & 0x7F) << 24) |
                                  (std::uint32_t(incFace & 0xFF) << 16);
     addFaceContacts(ref, polygon.data(), clipped, 0.0f, referenceIsA, idBase, spec, contacts);
+    if (edgeWins) {
+        if (!faceManifoldServes(incidentAlignment, contacts, edge)) contacts = edge;
+        return;
+    }
     // Clipping can lose everything when the pair only touches at a rim; GJK/EPA still has a point.
     // (In deep penetration the deepest incident vertex may lie outside the reference face and be
     // clipped away: the manifold is then shallower than the true depth, as with any face clipper.)
