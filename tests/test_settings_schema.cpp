@@ -341,7 +341,7 @@ void TestSettingsSchema::inspectorFieldsUseTheSchemaRanges() {
                        QString::fromLatin1(p.key.data(), static_cast<qsizetype>(p.key.size()));
     }
     // What the Inspector edits otherwise: the orientation as Euler angles, the colour in a colour
-    // dialog; hull points, a compound's children (listed read-only), a surface's samples and a mesh
+    // dialog; hull points, a compound's children (a table of their own), a surface's samples and a mesh
     // file's scale (applied on import) are not edited.
     const QSet<QString> notNumberFields{"body.orientation",     "body.color",          "convexHull.points",
                                         "compoundChild.position", "compoundChild.orientation", "mesh.vertices",
