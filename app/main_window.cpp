@@ -2,11 +2,13 @@
 
 #include "app/document/body_templates.h"
 #include "app/document/document_manager.h"
+#include "app/document/geometry_import.h"
 #include "app/document/scene_actions.h"
 #include "app/document/scene_document.h"
 #include "app/document/scene_tree_model.h"
 #include "app/help_dialog.h"
 #include "app/panels/accuracy_panel.h"
+#include "app/panels/import_geometry_dialog.h"
 #include "app/panels/inspector_panel.h"
 #include "app/panels/live_state_panel.h"
 #include "app/panels/profiler_panel.h"
@@ -97,6 +99,21 @@ bool hasOwnTextHistory(const QObject* target, bool undo) {
 
 bool isDropDown(const QObject* target) {
     return qobject_cast<const QComboBox*>(target) || target->inherits("QQuickComboBox");
+}
+
+// Import Geometry's dialog for `path`; on OK the body is added as one undo entry, or a message
+// says why it cannot be and nothing changes.
+void importGeometry(QWidget* parent, SceneDocument* document, const QString& path) {
+    auto* dialog = new ImportGeometryDialog(path, parent);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    QObject::connect(dialog, &QDialog::accepted, parent, [parent, document, dialog] {
+        QString error;
+        QUndoCommand* command =
+            importGeometryCommand(document, dialog->path(), dialog->preview(), dialog->kind(), dialog->options(), &error);
+        if (command) document->undoStack()->push(command);
+        else QMessageBox::warning(parent, MainWindow::tr("Import Geometry"), error);
+    });
+    dialog->open();
 }
 
 }  // namespace
@@ -209,6 +226,13 @@ void MainWindow::createActions() {
     a = createAction(this, QStringLiteral("import"), tr("&Import Thesis Scene…"), {},
                      tr("Open a scene of the 2018 thesis app; it is saved as a new Interplay scene"));
     connect(a, &QAction::triggered, m_files, &DocumentManager::importThesisScene);
+    a = createAction(this, QStringLiteral("importGeometry"), tr("Import &Geometry…"), {},
+                     tr("Add a body made from an OBJ, STL, glTF or GLB file: a static mesh or a convex hull"));
+    connect(a, &QAction::triggered, this, [this] {
+        const QString path = QFileDialog::getOpenFileName(this, tr("Import Geometry"), QString(),
+                                                          tr("Meshes (*.obj *.stl *.gltf *.glb);;All files (*)"));
+        if (!path.isEmpty()) importGeometry(this, m_document, path);
+    });
     a = createAction(this, QStringLiteral("save"), tr("&Save"), QKeySequence::Save, tr("Save the scene"));
     a->setIcon(QIcon::fromTheme(QStringLiteral("document-save"), s->standardIcon(QStyle::SP_DialogSaveButton)));
     connect(a, &QAction::triggered, m_files, &DocumentManager::save);
@@ -437,6 +461,7 @@ void MainWindow::createMenusAndToolBars() {
     m_examplesMenu->setObjectName(QStringLiteral("examplesMenu"));
     rebuildExamplesMenu();
     file->addAction(action(QStringLiteral("import")));
+    file->addAction(action(QStringLiteral("importGeometry")));
     file->addSeparator();
     file->addAction(action(QStringLiteral("save")));
     file->addAction(action(QStringLiteral("saveAs")));
@@ -736,8 +761,10 @@ void MainWindow::closeEvent(QCloseEvent* event) {
 
 void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
     const QList<QUrl> urls = event->mimeData()->urls();
+    // A scene opens; a mesh file is imported into the scene (Import Geometry's dialog).
     if (urls.size() == 1 && urls.first().isLocalFile() &&
-        urls.first().toLocalFile().endsWith(QStringLiteral(".json"), Qt::CaseInsensitive)) {
+        (urls.first().toLocalFile().endsWith(QStringLiteral(".json"), Qt::CaseInsensitive) ||
+         isGeometryFile(urls.first().toLocalFile()))) {
         event->acceptProposedAction();
     }
 }
@@ -748,7 +775,8 @@ void MainWindow::dropEvent(QDropEvent* event) {
     event->acceptProposedAction();
     // Opening asks questions (unsaved changes); not while the drag source waits for the drop.
     const QString path = urls.first().toLocalFile();
-    QTimer::singleShot(0, m_files, [this, path] { m_files->open(path); });
+    if (isGeometryFile(path)) QTimer::singleShot(0, this, [this, path] { importGeometry(this, m_document, path); });
+    else QTimer::singleShot(0, m_files, [this, path] { m_files->open(path); });
 }
 
 void MainWindow::restoreLayout() {

@@ -12,6 +12,7 @@
 #include "app/document/scene_tree_model.h"
 #include "app/document/undo_commands.h"
 #include "app/main_window.h"
+#include "app/panels/compound_children_model.h"
 #include "app/panels/inspector_panel.h"
 #include "app/panels/number_field.h"
 #include "app/simulation/simulation_controller.h"
@@ -29,10 +30,16 @@
 #include <QFile>
 #include <QHeaderView>
 #include <QLabel>
+#include <QLineEdit>
+#include <QMenu>
+#include <QTableView>
+#include <QToolButton>
 #include <QPushButton>
 #include <QSettings>
+#include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTest>
+#include <QTimer>
 #include <QTreeView>
 #include <QUndoStack>
 
@@ -103,6 +110,7 @@ private slots:
     void mixedSelectionShowsMixedChoices();
     void mixedCheckBoxesArePartlyChecked();
     void inspectorShowsTheMassADensityGives();
+    void inspectorEditsCompoundChildren();
     void sceneTreeShowsWholeNames();
 
 private:
@@ -460,6 +468,97 @@ void TestEditorSelection::inspectorShowsTheMassADensityGives() {
     const float engineMass = world->mass(m_window->simulation()->bodyIds()[body]);
     QCOMPARE(result->text(), QString("= %1 kg").arg(double(engineMass), 0, 'g', 4));
     QVERIFY(std::abs(engineMass - mass) < 1e-4f * mass);  // switching kept the body as heavy
+}
+
+void TestEditorSelection::inspectorEditsCompoundChildren() {
+    openScene("table_and_dumbbells.json");
+    interplay::SceneDocument* document = m_window->document();
+    QUndoStack* history = document->undoStack();
+    interplay::InspectorPanel* inspector = m_window->inspector();
+    auto* table = inspector->findChild<QTableView*>("compoundChildren");
+    auto* result = inspector->findChild<QLabel*>("massResult");
+    QVERIFY(table && result);
+    const int dumbbell = 2;  // a capsule bar (r 0.03 m, half height 0.25 m) and two 0.09 m balls, 7800 kg/m³
+    QCOMPARE(QString::fromStdString(document->body(dumbbell).body.name), QString("dumbbell 1"));
+    document->setSelectedBodies({dumbbell});
+    QTRY_VERIFY(table->isVisible());
+    const auto children = [&] { return document->body(dumbbell).body.shape.compound->children(); };
+    QCOMPARE(table->model()->rowCount(), 3);
+
+    // Double-click a cell, type, Enter: one undo entry per edit.
+    const auto typeInto = [&](int row, int column, const QString& text) {
+        const QModelIndex index = table->model()->index(row, column);
+        table->scrollTo(index);
+        const QPoint centre = table->visualRect(index).center();
+        QTest::mouseClick(table->viewport(), Qt::LeftButton, {}, centre);
+        QTest::mouseDClick(table->viewport(), Qt::LeftButton, {}, centre);
+        QLineEdit* editor = nullptr;
+        QTRY_VERIFY((editor = table->viewport()->findChild<QLineEdit*>()) && editor->isVisible());
+        editor->selectAll();
+        QTest::keyClicks(editor, text);
+        QTest::keyClick(editor, Qt::Key_Return);
+        QCoreApplication::processEvents();  // the command is pushed once the editor has committed
+    };
+    int entries = history->count();
+    typeInto(2, interplay::CompoundChildrenModel::SizeColumn, "0.1");
+    QTRY_COMPARE(history->count(), entries + 1);
+    QCOMPARE(children()[2].shape.radius, 0.1f);
+    // Mass recomputed: the volumes add up (the doc's rule: overlaps count twice).
+    const double pi = 3.14159265358979;
+    const auto ball = [&](double r) { return 4.0 / 3.0 * pi * r * r * r; };
+    const double mass = 7800.0 * (pi * 0.03 * 0.03 * 0.5 + ball(0.03) + ball(0.09) + ball(0.1));
+    QCOMPARE(result->text(), QString("= %1 kg").arg(mass, 0, 'g', 4));
+
+    typeInto(1, interplay::CompoundChildrenModel::X, "0.25");
+    QTRY_COMPARE(history->count(), entries + 2);
+    QCOMPARE(children()[1].pose.position, simcore::Vec3(0.25f, -0.3f, 0.0f));
+    typeInto(0, interplay::CompoundChildrenModel::AngleX, "90");
+    QTRY_COMPARE(history->count(), entries + 3);
+    const simcore::Vec3 turnedAxis = children()[0].pose.rotation * simcore::Vec3(0, 1, 0);  // the bar's axis, now +z
+    QVERIFY2(glm::length(turnedAxis - simcore::Vec3(0, 0, 1)) < 1e-5f, qPrintable(QString::number(turnedAxis.z)));
+    // A size out of range is refused with a message, and nothing changes.
+    QSignalSpy rejected(inspector, &interplay::InspectorPanel::rejected);
+    typeInto(2, interplay::CompoundChildrenModel::SizeColumn, "-1");
+    QCOMPARE(rejected.count(), 1);
+    QCOMPARE(history->count(), entries + 3);
+    QCOMPARE(children()[2].shape.radius, 0.1f);
+
+    // Add Child → Box from the button's menu; Remove takes the selected child off again.
+    entries = history->count();
+    auto* add = inspector->findChild<QToolButton*>("addChild");
+    QVERIFY(add);
+    QMenu* menu = add->menu();
+    QAction* box = menu->actions().value(0);
+    QCOMPARE(box->text(), QString("Box"));
+    // The press runs the menu's own event loop: the click on its item comes from a timer.
+    bool clicked = false;
+    QTimer::singleShot(0, menu, [&] {
+        if (!QTest::qWaitFor([&] { return menu->isVisible(); })) return;
+        QTest::mouseClick(menu, Qt::LeftButton, {}, menu->actionGeometry(box).center());
+        clicked = true;
+    });
+    QTest::mouseClick(add, Qt::LeftButton);
+    QTRY_VERIFY(clicked);
+    QTRY_COMPARE(history->count(), entries + 1);
+    QCOMPARE(children().size(), std::size_t(4));
+    QVERIFY(children()[3].shape.type == simcore::ShapeType::Box);
+    QCOMPARE(table->model()->rowCount(), 4);
+    const QString heavier = result->text();
+    QTest::mouseClick(table->viewport(), Qt::LeftButton, {}, table->visualRect(table->model()->index(1, 0)).center());
+    QTest::mouseClick(inspector->findChild<QPushButton*>("removeChild"), Qt::LeftButton);
+    QTRY_COMPARE(history->count(), entries + 2);
+    QCOMPARE(children().size(), std::size_t(3));
+    QCOMPARE(children()[1].pose.position, simcore::Vec3(0.0f, 0.3f, 0.0f));  // the other ball moved up a row
+    QVERIFY(result->text() != heavier);
+
+    // Undo walks back edit by edit, to the file's dumbbell.
+    history->undo();
+    QCOMPARE(children().size(), std::size_t(4));
+    for (int i = 0; i < 4; ++i) history->undo();
+    QCOMPARE(children().size(), std::size_t(3));
+    QCOMPARE(children()[2].shape.radius, 0.09f);
+    QCOMPARE(children()[1].pose.position, simcore::Vec3(0.0f, -0.3f, 0.0f));
+    QCOMPARE(table->model()->index(2, interplay::CompoundChildrenModel::SizeColumn).data().toString(), QString("0.09"));
 }
 
 void TestEditorSelection::sceneTreeShowsWholeNames() {

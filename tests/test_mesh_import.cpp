@@ -1,9 +1,13 @@
 // Geometry import (simcore_import): OBJ, ASCII and binary STL, glTF with an embedded buffer and
 // GLB, each written by the test, give the expected triangle counts, bounds and fronts; scale and
 // up axis are applied; missing, unsupported, empty, oversized, truncated and garbage files give a
-// message naming the file; hull points of a part.
+// message naming the file; hull points of a part. Scenes that reference mesh files: relative
+// paths resolved from the scene's folder, round trips that keep the reference (also after saving
+// to another folder), missing, hostile and limit-breaking files refused with the path as written
+// and as resolved, and a loader without the importer saying so.
 
 #include "simcore/io/mesh_import.h"
+#include "simcore/io/scene_io.h"
 #include "simcore/shapes/convex_hull.h"
 
 #include <QtTest>
@@ -136,8 +140,24 @@ private slots:
     void hullPointsOfAPart();
     void triangleMeshFromFile();
     void shippedFiles();
+    void sceneMeshFileResolvesFromTheSceneFolder();
+    void sceneMeshFileRoundTripKeepsTheReference();
+    void sceneMeshFileSavedElsewhereIsRewritten();
+    void sceneMeshFileErrorsNameThePath_data();
+    void sceneMeshFileErrorsNameThePath();
+    void sceneMeshFileLimitsApplyToTheLoader();
 
 private:
+    // A scene of one static body whose mesh is `shape` (a JSON object), written to `name`.
+    QString writeScene(const QString& name, const QByteArray& shape) {
+        return write(name, R"({"format": "interplay.scene", "version": 1, "bodies": [
+            {"name": "terrain", "motion": "static", "shape": )" + shape + "}]}");
+    }
+    static SceneReadOptions withImporter() {
+        SceneReadOptions options;
+        options.loadMeshFile = importMeshFile;
+        return options;
+    }
     QString write(const QString& name, const QByteArray& bytes) {
         const QString path = dir.filePath(name);
         QFile file(path);
@@ -358,6 +378,129 @@ void TestMeshImport::shippedFiles() {
         QVERIFY2(!mesh.ok() && QString::fromStdString(mesh.error).startsWith(hostile.filePath(name) + ": "),
                  qPrintable(name + ": " + QString::fromStdString(mesh.error)));
     }
+}
+
+void TestMeshImport::sceneMeshFileResolvesFromTheSceneFolder() {
+    QVERIFY(QDir(dir.path()).mkpath("scenes/parts"));
+    write("scenes/parts/box.obj", kBoxObj);
+    const QString scene = writeScene("scenes/a.json", R"({"type": "mesh", "file": "parts/box.obj", "scale": [2, 1, 1]})");
+    const SceneLoadResult loaded = loadSceneFile(scene.toStdString(), withImporter());
+    QVERIFY2(loaded.ok(), loaded.diagnostics.empty() ? "" : loaded.diagnostics.front().toString().c_str());
+    const SceneBody& body = loaded.scene->bodies.front();
+    QVERIFY(body.meshFile && body.body.shape.mesh);
+    QCOMPARE(body.meshFile->file, std::string("parts/box.obj"));
+    QCOMPARE(QString::fromStdString(body.meshFile->resolvedPath.string()),
+             QDir::cleanPath(QDir(dir.path()).absoluteFilePath("scenes/parts/box.obj")));
+    QCOMPARE(body.body.shape.mesh->triangleCount(), std::size_t(12));
+    // The scale reached the importer: x doubled from the file's [-1, 1].
+    QVERIFY(near(body.body.shape.mesh->bounds().max, {2, 2, 3}));
+
+    // "../": the folder above the scene's; the working directory plays no part.
+    write("box.obj", kBoxObj);
+    const QString up = writeScene("scenes/b.json", R"({"type": "mesh", "file": "../box.obj"})");
+    QVERIFY(loadSceneFile(up.toStdString(), withImporter()).ok());
+}
+
+void TestMeshImport::sceneMeshFileRoundTripKeepsTheReference() {
+    write("box.obj", kBoxObj);
+    const QString path = writeScene("a.json", R"({"type": "mesh", "file": "box.obj", "scale": [1, -2, 0.5], "upAxis": "z"})");
+    const SceneLoadResult loaded = loadSceneFile(path.toStdString(), withImporter());
+    QVERIFY(loaded.ok());
+    const std::string text = serializeScene(*loaded.scene);
+    QVERIFY2(text.find("\"vertices\"") == std::string::npos, text.c_str());  // a reference stays one
+    QVERIFY(text.find("\"file\": \"box.obj\"") != std::string::npos);
+
+    QVERIFY(!saveSceneFile(*loaded.scene, dir.filePath("b.json").toStdString()));
+    const SceneLoadResult again = loadSceneFile(dir.filePath("b.json").toStdString(), withImporter());
+    QVERIFY(again.ok());
+    const SceneBody& a = loaded.scene->bodies.front();
+    const SceneBody& b = again.scene->bodies.front();
+    QVERIFY(b.meshFile && *b.meshFile == *a.meshFile);
+    QVERIFY(b.body.shape.mesh->vertices() == a.body.shape.mesh->vertices());
+    QVERIFY(b.body.shape.mesh->triangleIndices() == a.body.shape.mesh->triangleIndices());
+    QCOMPARE(serializeScene(*again.scene), text);
+    // The editor checks every edit with checkScene: it must pass without reading the file again.
+    QVERIFY(QFile::remove(dir.filePath("box.obj")));
+    QVERIFY(checkScene(*again.scene).empty());
+}
+
+void TestMeshImport::sceneMeshFileSavedElsewhereIsRewritten() {
+    QVERIFY(QDir(dir.path()).mkpath("scenes/meshes"));
+    QVERIFY(QDir(dir.path()).mkpath("elsewhere/deeper"));
+    write("scenes/meshes/box.obj", kBoxObj);
+    const QString path = writeScene("scenes/a.json", R"({"type": "mesh", "file": "meshes/box.obj"})");
+    const SceneLoadResult loaded = loadSceneFile(path.toStdString(), withImporter());
+    QVERIFY(loaded.ok());
+    // Save As into another folder: the path is rewritten relative to it, and still names the file.
+    const QString moved = dir.filePath("elsewhere/deeper/b.json");
+    QVERIFY(!saveSceneFile(*loaded.scene, moved.toStdString()));
+    QFile file(moved);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    QVERIFY(file.readAll().contains(R"("file": "../../scenes/meshes/box.obj")"));
+    const SceneLoadResult again = loadSceneFile(moved.toStdString(), withImporter());
+    QVERIFY(again.ok());
+    QCOMPARE(again.scene->bodies.front().meshFile->resolvedPath, loaded.scene->bodies.front().meshFile->resolvedPath);
+    // An absolute reference stays absolute.
+    MeshFileReference absolute = *loaded.scene->bodies.front().meshFile;
+    absolute.file = absolute.resolvedPath.string();
+    QCOMPARE(meshFileText(absolute, dir.filePath("elsewhere").toStdString()), absolute.file);
+}
+
+void TestMeshImport::sceneMeshFileErrorsNameThePath_data() {
+    QTest::addColumn<QByteArray>("shape");
+    QTest::addColumn<QString>("expected");  // in the error, besides the file as written and resolved
+    QTest::newRow("missing") << QByteArray(R"({"type": "mesh", "file": "nowhere/terrain.obj"})") << "no such file";
+    QTest::newRow("hostile") << QByteArray(R"({"type": "mesh", "file": ")" INTERPLAY_SOURCE_DIR
+                                           R"(/tests/data/meshes/hostile/truncated.glb"})")
+                             << "cannot be read as glb";
+    QTest::newRow("not a mesh") << QByteArray(R"({"type": "mesh", "file": "a.json"})") << "unsupported format";
+    QTest::newRow("both") << QByteArray(R"({"type": "mesh", "file": "box.obj", "triangles": []})") << "not both";
+    QTest::newRow("zero scale") << QByteArray(R"({"type": "mesh", "file": "box.obj", "scale": [1, 0, 1]})")
+                                << "every scale factor";
+    QTest::newRow("up axis") << QByteArray(R"({"type": "mesh", "file": "box.obj", "upAxis": "w"})") << "expected y, z or x";
+}
+
+void TestMeshImport::sceneMeshFileErrorsNameThePath() {
+    QFETCH(QByteArray, shape);
+    QFETCH(QString, expected);
+    write("box.obj", kBoxObj);
+    const QString path = writeScene("a.json", shape);
+    const SceneLoadResult loaded = loadSceneFile(path.toStdString(), withImporter());
+    QVERIFY(!loaded.ok());
+    const std::string message = loaded.diagnostics.front().toString();
+    QVERIFY2(QString::fromStdString(message).contains(expected), message.c_str());
+    QVERIFY2(message.find("/bodies/0/shape/") != std::string::npos, message.c_str());
+    if (QString(QTest::currentDataTag()) == "missing") {
+        QVERIFY2(message.find("\"nowhere/terrain.obj\"") != std::string::npos, message.c_str());
+        QVERIFY2(message.find(dir.filePath("nowhere/terrain.obj").toStdString()) != std::string::npos, message.c_str());
+    }
+}
+
+void TestMeshImport::sceneMeshFileLimitsApplyToTheLoader() {
+    const QString path = writeScene("a.json", R"({"type": "mesh", "file": "any.obj"})");
+    // Without the importer (the engine alone, the fuzzers) the error says so and names the file.
+    const SceneLoadResult bare = loadSceneFile(path.toStdString());
+    QVERIFY(!bare.ok());
+    QVERIFY2(bare.diagnostics.front().message.find("without the mesh importer") != std::string::npos &&
+                 bare.diagnostics.front().message.find("\"any.obj\"") != std::string::npos,
+             bare.diagnostics.front().toString().c_str());
+    // Whatever a loader gives goes through the inline mesh's checks.
+    SceneReadOptions options;
+    MeshFileData given;
+    options.loadMeshFile = [&](const MeshFileRequest&) { return given; };
+    given.vertices = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}};  // a zero-area triangle
+    given.triangles = {{0, 1, 2}};
+    SceneLoadResult loaded = loadSceneFile(path.toStdString(), options);
+    QVERIFY(!loaded.ok());
+    QVERIFY2(loaded.diagnostics.front().message.find("cannot build the mesh of \"any.obj\"") != std::string::npos,
+             loaded.diagnostics.front().toString().c_str());
+    given.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 0, 2e6f}};  // beyond the coordinate range
+    QVERIFY(!loadSceneFile(path.toStdString(), options).ok());
+    given.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 0, 1}};
+    given.triangles = {{0, 1, 3}};  // an index out of range
+    QVERIFY(!loadSceneFile(path.toStdString(), options).ok());
+    given.triangles = {{0, 2, 1}};
+    QVERIFY(loadSceneFile(path.toStdString(), options).ok());
 }
 
 QTEST_APPLESS_MAIN(TestMeshImport)

@@ -341,10 +341,11 @@ void TestSettingsSchema::inspectorFieldsUseTheSchemaRanges() {
                        QString::fromLatin1(p.key.data(), static_cast<qsizetype>(p.key.size()));
     }
     // What the Inspector edits otherwise: the orientation as Euler angles, the colour in a colour
-    // dialog; hull points, a compound's children (listed read-only) and a surface's samples are not
-    // edited.
+    // dialog; hull points, a compound's children (a table of their own), a surface's samples and a mesh
+    // file's scale (applied on import) are not edited.
     const QSet<QString> notNumberFields{"body.orientation",     "body.color",          "convexHull.points",
                                         "compoundChild.position", "compoundChild.orientation", "mesh.vertices",
+                                        "mesh.scale",
                                         "heightField.rows",      "heightField.columns", "heightField.cellSize",
                                         "heightField.heightScale", "heightField.heights"};
     QCOMPARE(edited, numeric - notNumberFields);

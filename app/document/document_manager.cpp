@@ -288,7 +288,9 @@ void DocumentManager::autosaveNow() {
     if (!m_document->isModified()) return;
     const QString path = recoveryFilePath();
     QDir().mkpath(QFileInfo(path).absolutePath());
-    const std::string text = simcore::serializeScene(m_document->scene());
+    // Mesh file references relative to the recovery file's folder, where recovery reads them from.
+    const std::string text =
+        simcore::serializeScene(m_document->scene(), QFile::encodeName(QFileInfo(path).absolutePath()).toStdString());
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly) || file.write(text.data(), static_cast<qint64>(text.size())) < 0 ||
         !file.commit()) {
@@ -321,7 +323,8 @@ bool DocumentManager::offerRecovery() {
         return false;
     }
     const simcore::SceneLoadResult result =
-        simcore::loadSceneFile(std::filesystem::path(QFile::encodeName(path).toStdString()));
+        simcore::loadSceneFile(std::filesystem::path(QFile::encodeName(path).toStdString()),
+                               sceneReadOptions(QFileInfo(path).absolutePath()));
     if (!result.ok()) {
         QStringList errors;
         for (const simcore::Diagnostic& d : result.diagnostics) errors << QString::fromStdString(d.toString());

@@ -57,13 +57,17 @@ simcore::Scene sceneFragment(const simcore::Scene& scene, const QList<int>& indi
 }
 
 QByteArray fragmentText(const simcore::Scene& fragment) {
-    return QByteArray::fromStdString(simcore::serializeScene(fragment));
+    // Mesh files by absolute path: the text may be pasted into a scene in another folder.
+    simcore::Scene copied = fragment;
+    for (simcore::SceneBody& body : copied.bodies)
+        if (body.meshFile && !body.meshFile->resolvedPath.empty()) body.meshFile->file = body.meshFile->resolvedPath.generic_string();
+    return QByteArray::fromStdString(simcore::serializeScene(copied));
 }
 
 ParsedFragment parseFragment(const QByteArray& text) {
     if (text.trimmed().isEmpty()) return {std::nullopt, tr("The clipboard holds no scene: it is empty.")};
     simcore::SceneLoadResult result =
-        simcore::parseScene(std::string_view(text.constData(), std::size_t(text.size())), "clipboard");
+        simcore::parseScene(std::string_view(text.constData(), std::size_t(text.size())), "clipboard", sceneReadOptions({}));
     if (!result.ok()) {
         QStringList errors;
         for (const simcore::Diagnostic& diagnostic : result.diagnostics) {

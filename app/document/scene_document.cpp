@@ -2,6 +2,7 @@
 
 #include "app/document/scene_edits.h"
 
+#include "simcore/io/mesh_import.h"
 #include "simcore/io/scene_io.h"
 
 #include <QFile>
@@ -25,6 +26,13 @@ bool isThesisFormat(const QByteArray& text) {
 }
 
 }  // namespace
+
+simcore::SceneReadOptions sceneReadOptions(const QString& sceneFolder) {
+    simcore::SceneReadOptions options;
+    options.sceneFolder = QFile::encodeName(sceneFolder).toStdString();
+    options.loadMeshFile = simcore::importMeshFile;
+    return options;
+}
 
 SceneDocument::SceneDocument(QObject* parent)
     : QObject(parent), m_undoStack(new QUndoStack(this)) {
@@ -65,7 +73,7 @@ bool SceneDocument::load(const QString& path, QString* error) {
     simcore::SceneLoadResult result;
     try {
         result = simcore::parseScene(std::string_view(text.constData(), static_cast<std::size_t>(text.size())),
-                                     path.toStdString());
+                                     path.toStdString(), sceneReadOptions(QFileInfo(path).absolutePath()));
     } catch (const std::exception& e) {
         // The loader reports problems as diagnostics; this only guards against the unexpected.
         if (error) *error = tr("%1: %2").arg(path, QString::fromStdString(e.what()));
@@ -102,7 +110,8 @@ bool SceneDocument::loadExample(const QString& path, QString* error) {
 }
 
 bool SceneDocument::save(const QString& path, QString* error) {
-    const std::string text = simcore::serializeScene(m_scene);
+    // Mesh file references are rewritten relative to the folder saved to (Save As elsewhere).
+    const std::string text = simcore::serializeScene(m_scene, QFile::encodeName(QFileInfo(path).absolutePath()).toStdString());
     // QSaveFile writes a temporary file and renames it over the target on commit(): a failure at
     // any point leaves the old file as it was.
     QSaveFile file(path);

@@ -8,6 +8,7 @@
 // MapDocument: everything else changes the scene by pushing a command, so every edit is undoable.
 
 #include "simcore/io/scene.h"
+#include "simcore/io/scene_io.h"
 
 #include <QList>
 #include <QObject>
@@ -19,6 +20,9 @@
 class QUndoStack;
 
 namespace interplay {
+
+// How the editor reads scene text: mesh files relative to `sceneFolder`, through the importer.
+simcore::SceneReadOptions sceneReadOptions(const QString& sceneFolder);
 
 // What an edit of a body changed, so views refresh only what they show of it.
 enum class BodyField {

@@ -33,12 +33,13 @@ bool sameSceneBody(const simcore::SceneBody& a, const simcore::SceneBody& b) {
     const simcore::BodyCreationSettings& y = b.body;
     const bool sameShape = x.shape.type == y.shape.type && x.shape.halfExtents == y.shape.halfExtents &&
                            x.shape.radius == y.shape.radius && x.shape.halfHeight == y.shape.halfHeight &&
-                           x.shape.hull == y.shape.hull;
+                           x.shape.hull == y.shape.hull && x.shape.compound == y.shape.compound &&
+                           x.shape.mesh == y.shape.mesh && x.shape.heightField == y.shape.heightField;
     return sameShape && x.name == y.name && x.motion == y.motion && x.position == y.position &&
            x.orientation == y.orientation && x.linearVelocity == y.linearVelocity &&
            x.angularVelocity == y.angularVelocity && x.mass == y.mass && x.density == y.density &&
            x.friction == y.friction && x.restitution == y.restitution && x.rollingResistance == y.rollingResistance &&
-           x.ccd == y.ccd && a.color == b.color;
+           x.ccd == y.ccd && a.color == b.color && a.meshFile == b.meshFile;
 }
 
 // ---- AddBodies ----------------------------------------------------------------------------------

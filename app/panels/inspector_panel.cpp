@@ -2,6 +2,7 @@
 
 #include "app/document/body_templates.h"
 #include "app/document/undo_commands.h"
+#include "app/panels/compound_children_model.h"
 #include "app/panels/hull_points_dialog.h"
 #include "app/panels/hull_points_model.h"
 #include "app/panels/inspector_fields.h"
@@ -17,10 +18,14 @@
 #include <QComboBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
+#include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMenu>
 #include <QPushButton>
 #include <QScrollArea>
+#include <QTableView>
+#include <QToolButton>
 #include <QUndoStack>
 #include <QVBoxLayout>
 
@@ -98,10 +103,6 @@ bool hasHalfHeight(const simcore::SceneBody& b) {
     return type == simcore::ShapeType::Capsule || type == simcore::ShapeType::Cylinder;
 }
 
-simcore::Vec3 eulerDegrees(const simcore::Quat& q) {
-    return glm::degrees(glm::eulerAngles(q));
-}
-
 // Body colours are linear RGB; the colour dialog speaks sRGB.
 QColor toQColor(const simcore::Vec3& linear) {
     return QColor::fromRgbF(srgbFromLinear(linear.r), srgbFromLinear(linear.g), srgbFromLinear(linear.b));
@@ -156,7 +157,8 @@ InspectorPanel::InspectorPanel(SceneDocument* document, QWidget* parent)
                   },
                   [this](const QString& message) { showMessage(message); }),
       m_name(new QLineEdit), m_shapeType(new QComboBox), m_hullInfo(new QLabel),
-      m_editHullPoints(new QPushButton(tr("Edit Points…"))), m_compoundInfo(new QLabel), m_massResult(new QLabel),
+      m_editHullPoints(new QPushButton(tr("Edit Points…"))), m_compoundChildren(new CompoundChildrenModel(this)),
+      m_compoundTable(new QTableView), m_removeChild(new QPushButton(tr("Remove"))), m_massResult(new QLabel),
       m_motion(new QComboBox),
       m_massMode(new QComboBox), m_color(new QPushButton), m_ccd(new QCheckBox(tr("Continuous collision (CCD)"))),
       m_jointName(new QLineEdit), m_jointType(new QLabel), m_jointBodies(new QLabel),
@@ -280,11 +282,7 @@ void InspectorPanel::createBodyRows() {
     hullLayout->addWidget(m_editHullPoints);
     m_bodyRows.addRow(tr("Hull"), hullRow, isHull);
     connect(m_editHullPoints, &QPushButton::clicked, this, &InspectorPanel::editHullPoints);
-    m_compoundInfo->setObjectName(QStringLiteral("compoundChildren"));
-    m_compoundInfo->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    m_bodyRows.addRow(tr("Children"), m_compoundInfo, [](const simcore::SceneBody& b) {
-        return b.body.shape.type == simcore::ShapeType::Compound;
-    });
+    createCompoundRow();
 
     // Motion and mass.
     for (simcore::MotionType motion : kMotionTypes) m_motion->addItem(motionLabel(motion), static_cast<int>(motion));
@@ -356,7 +354,7 @@ void InspectorPanel::createBodyRows() {
                          [](simcore::SceneBody& b, int axis, double v) {
                              simcore::Vec3 angles = eulerDegrees(b.body.orientation);
                              angles[axis] = static_cast<float>(v);
-                             b.body.orientation = glm::normalize(simcore::Quat(glm::radians(angles)));
+                             b.body.orientation = fromEulerDegrees(angles);
                          });
     m_bodyRows.addVector(QStringLiteral("linearVelocity"), tr("Velocity (m/s)"), tr("Velocity"),
                          range(PropertyOwner::Body, "linearVelocity").min, range(PropertyOwner::Body, "linearVelocity").max,
@@ -543,19 +541,10 @@ void InspectorPanel::refreshBodies() {
                                 .arg(lead.body.shape.hull->sourcePoints().size())
                                 .arg(lead.body.shape.hull->faces().size()));
     }
-    if (lead.body.shape.compound) {
-        // One line per child: its type and where it sits in the body frame.
-        QStringList lines;
-        for (const simcore::CompoundChild& child : lead.body.shape.compound->children()) {
-            const simcore::Vec3& p = child.pose.position;
-            lines << tr("%1 at (%2, %3, %4)")
-                         .arg(shapeDisplayName(child.shape.type))
-                         .arg(p.x, 0, 'g', 4)
-                         .arg(p.y, 0, 'g', 4)
-                         .arg(p.z, 0, 'g', 4);
-        }
-        m_compoundInfo->setText(lines.join(QLatin1Char('\n')));
-    }
+    // The children of one compound at a time: several bodies' children do not line up as rows.
+    m_compoundTable->setEnabled(bodies.size() == 1);
+    m_compoundChildren->setChildren(lead.body.shape.compound ? lead.body.shape.compound->children()
+                                                             : std::vector<simcore::CompoundChild>{});
     const auto color = sharedValue(bodies, [](const simcore::SceneBody& b) { return b.color; });
     if (color && *color) {
         const QColor c = toQColor(**color);
@@ -567,6 +556,54 @@ void InspectorPanel::refreshBodies() {
         m_color->setStyleSheet(QString());
     }
     showSharedCheck(m_ccd, sharedValue(bodies, [](const simcore::SceneBody& b) { return b.body.ccd; }));
+}
+
+void InspectorPanel::createCompoundRow() {
+    const auto isCompound = [](const simcore::SceneBody& b) { return b.body.shape.type == simcore::ShapeType::Compound; };
+    auto* row = new QWidget;
+    auto* layout = new QVBoxLayout(row);
+    layout->setContentsMargins(0, 0, 0, 0);
+    m_compoundTable->setObjectName(QStringLiteral("compoundChildren"));
+    m_compoundTable->setModel(m_compoundChildren);
+    m_compoundTable->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed |
+                                     QAbstractItemView::AnyKeyPressed);
+    m_compoundTable->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_compoundTable->setSelectionMode(QAbstractItemView::SingleSelection);
+    m_compoundTable->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    m_compoundTable->setMinimumHeight(120);
+    layout->addWidget(m_compoundTable);
+    auto* buttons = new QHBoxLayout;
+    auto* add = new QToolButton;
+    add->setObjectName(QStringLiteral("addChild"));
+    add->setText(tr("Add Child"));
+    add->setPopupMode(QToolButton::InstantPopup);
+    auto* types = new QMenu(add);
+    for (simcore::ShapeType type : {simcore::ShapeType::Box, simcore::ShapeType::Sphere, simcore::ShapeType::Capsule,
+                                    simcore::ShapeType::Cylinder})
+        types->addAction(shapeDisplayName(type), this, [this, type] { m_compoundChildren->addChild(type); });
+    add->setMenu(types);
+    m_removeChild->setObjectName(QStringLiteral("removeChild"));
+    buttons->addWidget(add);
+    buttons->addWidget(m_removeChild);
+    buttons->addStretch(1);
+    layout->addLayout(buttons);
+    m_bodyRows.addRow(tr("Children"), row, isCompound);
+    connect(m_removeChild, &QPushButton::clicked, this, [this] {
+        const QModelIndex current = m_compoundTable->currentIndex();
+        m_compoundChildren->removeChild(current.isValid() ? current.row() : m_compoundChildren->rowCount() - 1);
+    });
+    connect(m_compoundChildren, &CompoundChildrenModel::refused, this, &InspectorPanel::showMessage);
+    // One command per accepted edit, with the model's children; checkScene may still refuse it,
+    // and the refresh after either outcome puts the document's children back into the model.
+    connect(m_compoundChildren, &CompoundChildrenModel::childrenEdited, this, [this, isCompound](const QString& what) {
+        auto compound = std::make_shared<const simcore::CompoundShape>(m_compoundChildren->children());
+        // Queued: the table's editor is still committing into the model while this signal runs.
+        QMetaObject::invokeMethod(this, [this, isCompound, what, compound] {
+            editBodies(BodyField::Shape, what, [&](simcore::SceneBody& b) { b.body.shape = simcore::Shape::compoundOf(compound); },
+                       isCompound);
+            refresh();
+        }, Qt::QueuedConnection);
+    });
 }
 
 void InspectorPanel::editHullPoints() {

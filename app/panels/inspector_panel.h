@@ -22,9 +22,11 @@ class QFormLayout;
 class QLabel;
 class QLineEdit;
 class QPushButton;
+class QTableView;
 
 namespace interplay {
 
+class CompoundChildrenModel;
 class NumberField;
 
 class InspectorPanel : public QWidget {
@@ -76,6 +78,7 @@ private:
     void showMessage(const QString& message);
     void chooseColor();
     void editHullPoints();
+    void createCompoundRow();
 
     SceneDocument* m_document;
     QLabel* m_header;
@@ -89,7 +92,9 @@ private:
     QComboBox* m_shapeType;
     QLabel* m_hullInfo;
     QPushButton* m_editHullPoints;
-    QLabel* m_compoundInfo;  // a compound's children, read-only: editing them is a later step
+    CompoundChildrenModel* m_compoundChildren;  // the lead body's children, edited in a table
+    QTableView* m_compoundTable;
+    QPushButton* m_removeChild;
     QLabel* m_massResult;    // what the given mass or density comes to
     QComboBox* m_motion;
     QComboBox* m_massMode;

@@ -3,6 +3,7 @@
 #include "report.h"
 #include "runner_options.h"
 
+#include "simcore/io/mesh_import.h"
 #include "simcore/io/scene_io.h"
 
 #include <algorithm>
@@ -52,7 +53,9 @@ private:
 };
 
 int run(const runner::RunnerOptions& options) {
-    simcore::SceneLoadResult loaded = simcore::loadSceneFile(options.scenePath);
+    simcore::SceneReadOptions reading;
+    reading.loadMeshFile = simcore::importMeshFile;  // mesh files through assimp (mesh_file.h)
+    simcore::SceneLoadResult loaded = simcore::loadSceneFile(options.scenePath, reading);
     for (const simcore::Diagnostic& d : loaded.diagnostics) std::cerr << d.toString() << '\n';
     if (!loaded.ok()) return kUnreadableScene;
     simcore::Scene& scene = *loaded.scene;

@@ -621,11 +621,12 @@ QUndoCommand* SimulationController::simulatedPoseCommand(SceneDocument* document
     // The joints riding on the bodies go with them, as the command will carry them.
     for (auto& [index, joint] : jointsCarriedWith(document->scene(), indices, bodies))
         applied.joints[static_cast<std::size_t>(index)] = std::move(joint);
-    // The file format's own check, so the document never holds a scene it could not reopen.
-    const simcore::SceneLoadResult reloaded = simcore::parseScene(simcore::serializeScene(applied), "simulated pose");
-    if (!reloaded.ok()) {
-        const auto refusal = std::find_if(reloaded.diagnostics.begin(), reloaded.diagnostics.end(),
-                                          [](const simcore::Diagnostic& d) { return d.severity == simcore::Diagnostic::Severity::Error; });
+    // The file format's own check, so the document never holds a scene it could not reopen
+    // (checkScene, which also checks meshes read from files without reading them again).
+    const std::vector<simcore::Diagnostic> problems = simcore::checkScene(applied);
+    const auto refusal = std::find_if(problems.begin(), problems.end(),
+                                      [](const simcore::Diagnostic& d) { return d.severity == simcore::Diagnostic::Severity::Error; });
+    if (refusal != problems.end()) {
         if (error) *error = tr("The simulated state cannot be saved in a scene file (%1: %2).")
                                 .arg(QString::fromStdString(refusal->path), QString::fromStdString(refusal->message));
         return nullptr;

@@ -8,6 +8,7 @@
 #include "accuracy/scene_sweep.h"
 #include "accuracy/sweep_files.h"
 
+#include "simcore/io/mesh_import.h"
 #include "simcore/io/scene_io.h"
 
 #include <unistd.h>
@@ -31,6 +32,13 @@ std::atomic<bool> interrupted{false};
 extern "C" void onInterrupt(int) {
     interrupted.store(true);
     std::signal(SIGINT, SIG_DFL);  // a second Ctrl-C ends the program at once
+}
+
+// The scene with its mesh files read through assimp (mesh_file.h).
+simcore::SceneLoadResult loadScene(const fs::path& path) {
+    simcore::SceneReadOptions reading;
+    reading.loadMeshFile = simcore::importMeshFile;
+    return simcore::loadSceneFile(path, reading);
 }
 
 int complain(const std::string& message, int code) {
@@ -151,7 +159,7 @@ int merge(const Options& options) {
     std::string error;
     const std::optional<accuracy::SweepPlan> plan = accuracy::readPlan(accuracy::planPath(dir), error);
     if (!plan) return complain(error, kCorruptResult);
-    simcore::SceneLoadResult loaded = simcore::loadSceneFile(plan->scenePath);
+    simcore::SceneLoadResult loaded = loadScene(plan->scenePath);
     for (const simcore::Diagnostic& d : loaded.diagnostics) std::cerr << d.toString() << '\n';
     if (!loaded.ok()) return kUnreadableScene;
     const std::optional<accuracy::Reference> reference = accuracy::readReference(accuracy::referencePath(dir), plan->key, error);
@@ -177,7 +185,7 @@ int merge(const Options& options) {
 }
 
 int run(Options options) {
-    simcore::SceneLoadResult loaded = simcore::loadSceneFile(options.scenePath);
+    simcore::SceneLoadResult loaded = loadScene(options.scenePath);
     for (const simcore::Diagnostic& d : loaded.diagnostics) std::cerr << d.toString() << '\n';
     if (!loaded.ok()) return kUnreadableScene;
     const simcore::Scene& scene = *loaded.scene;

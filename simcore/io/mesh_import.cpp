@@ -224,6 +224,23 @@ TriangleMesh::BuildResult importTriangleMesh(const std::filesystem::path& file, 
     return built;
 }
 
+MeshFileData importMeshFile(const MeshFileRequest& request) {
+    const MeshFileReference& reference = request.reference;
+    MeshImportOptions options;
+    options.scale = reference.scale;
+    options.upAxis = reference.upAxis;
+    ImportedMesh imported = importMesh(reference.resolvedPath, options);
+    MeshFileData out;
+    if (!imported.ok()) {
+        // importMesh's messages start with the resolved path; say what the scene wrote as well.
+        out.error = "cannot read the mesh file \"" + reference.file + "\": " + imported.error;
+        return out;
+    }
+    out.vertices = std::move(imported.vertices);
+    out.triangles = std::move(imported.triangles);
+    return out;
+}
+
 HullPoints hullPoints(const ImportedMesh& mesh) {
     const auto built = ConvexHull::build(mesh.vertices);
     if (!built.hull) return {{}, "no convex hull: " + built.error};

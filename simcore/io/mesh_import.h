@@ -21,6 +21,7 @@
 // unsupported extension, a file over maxFileBytes, a file assimp cannot parse (truncated,
 // garbage), one with no triangles, or more than maxTriangles of them.
 
+#include "simcore/io/mesh_file.h"
 #include "simcore/math/math.h"
 #include "simcore/shapes/triangle_mesh.h"
 
@@ -32,8 +33,6 @@
 #include <vector>
 
 namespace simcore {
-
-enum class UpAxis : std::uint8_t { Y, Z, X };
 
 struct MeshImportOptions {
     Vec3 scale{1.0f};                              // per axis, after the up-axis turn; finite, non-zero
@@ -61,6 +60,10 @@ ImportedMesh importMeshFromMemory(const void* data, std::size_t size, std::strin
 
 // A static mesh straight from a file: importMesh, then TriangleMesh::build, errors naming the file.
 TriangleMesh::BuildResult importTriangleMesh(const std::filesystem::path& file, const MeshImportOptions& options = {});
+
+// The scene loader's MeshFileLoader (mesh_file.h): importMesh of the reference's resolved path with
+// its scale and up axis; errors name the file as the scene wrote it and as resolved.
+MeshFileData importMeshFile(const MeshFileRequest& request);
 
 // Points for a convex hull of an imported part: the extreme vertices (the hull's own), at most
 // limits::kMaxHullPoints of them so a scene can store them. Fails for a flat or line-like mesh.

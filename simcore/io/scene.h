@@ -4,6 +4,7 @@
 
 #include "simcore/dynamics/body.h"
 #include "simcore/dynamics/joint.h"
+#include "simcore/io/mesh_file.h"
 #include "simcore/world/world.h"
 #include "simcore/world_settings.h"
 
@@ -15,6 +16,9 @@ namespace simcore {
 struct SceneBody {
     BodyCreationSettings body;
     std::optional<Vec3> color;  // linear RGB in [0, 1]; the viewer picks one when unset
+    // Set when the body's mesh shape was read from a file: saving writes the reference, not the
+    // triangles. Ignored unless the shape is a mesh.
+    std::optional<MeshFileReference> meshFile;
 };
 
 // A joint refers to its bodies by index into Scene::bodies (files name them).

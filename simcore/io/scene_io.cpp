@@ -30,6 +30,40 @@ std::string osError(int error) { return std::system_category().message(error); }
 
 }  // namespace
 
+std::string_view upAxisName(UpAxis axis) {
+    switch (axis) {
+        case UpAxis::Z: return "z";
+        case UpAxis::X: return "x";
+        case UpAxis::Y: break;
+    }
+    return "y";
+}
+
+std::optional<UpAxis> parseUpAxis(std::string_view name) {
+    for (const UpAxis axis : {UpAxis::Y, UpAxis::Z, UpAxis::X})
+        if (upAxisName(axis) == name) return axis;
+    return std::nullopt;
+}
+
+std::filesystem::path resolveMeshFile(std::string_view file, const std::filesystem::path& sceneFolder) {
+    namespace fs = std::filesystem;
+    const fs::path written(file);
+    std::error_code ec;
+    const fs::path folder = fs::absolute(sceneFolder.empty() ? fs::path(".") : sceneFolder, ec);
+    return (written.is_absolute() ? written : folder / written).lexically_normal();
+}
+
+std::string meshFileText(const MeshFileReference& reference, const std::filesystem::path& sceneFolder) {
+    namespace fs = std::filesystem;
+    if (sceneFolder.empty() || reference.resolvedPath.empty() ||
+        resolveMeshFile(reference.file, sceneFolder) == reference.resolvedPath)
+        return reference.file;
+    std::error_code ec;
+    const fs::path folder = fs::absolute(sceneFolder, ec).lexically_normal();
+    const fs::path relative = reference.resolvedPath.lexically_relative(folder);
+    return relative.empty() ? reference.resolvedPath.generic_string() : relative.generic_string();
+}
+
 std::string Diagnostic::toString() const {
     const char* kind = severity == Severity::Error ? "error" : "warning";
     const std::string name = file.empty() ? "<scene>" : file;
@@ -39,7 +73,7 @@ std::string Diagnostic::toString() const {
     return name + ": " + kind + ": " + message;
 }
 
-SceneLoadResult loadSceneFile(const std::filesystem::path& path) {
+SceneLoadResult loadSceneFile(const std::filesystem::path& path, const SceneReadOptions& options) {
     SceneLoadResult result;
     const std::string name = path.string();
     auto fail = [&](std::string message) {
@@ -71,17 +105,19 @@ SceneLoadResult loadSceneFile(const std::filesystem::path& path) {
     std::fclose(f);
     if (tooLarge) return fail("the file is larger than " + std::to_string(kMaxSceneFileBytes >> 20) + " MiB; it is not a scene");
     if (readError) return fail("cannot read the scene: " + osError(readErrno));
-    return parseScene(text, name);
+    SceneReadOptions withFolder = options;
+    if (withFolder.sceneFolder.empty()) withFolder.sceneFolder = path.parent_path();
+    return parseScene(text, name, withFolder);
 }
 
 std::optional<std::string> saveSceneFile(const Scene& scene, const std::filesystem::path& requestedPath) {
     namespace fs = std::filesystem;
-    const std::string text = serializeScene(scene);
+    std::error_code ec;
+    const std::string text = serializeScene(scene, fs::absolute(requestedPath, ec).parent_path());
     const std::string target = requestedPath.string();
     auto failure = [&](const std::string& why) { return "cannot save '" + target + "': " + why; };
 
     if (requestedPath.filename().empty()) return failure("the path names no file");
-    std::error_code ec;
     if (fs::is_directory(requestedPath, ec)) return failure(osError(EISDIR));
     // Saving through a symbolic link replaces the file it points to, not the link.
     fs::path path = requestedPath;
@@ -132,8 +168,25 @@ std::vector<Diagnostic> checkScene(const Scene& scene) {
         missing.message = "a body of the joint is missing";
         return {missing};
     }
-    // The loader's own rules, by the loader: no second copy of them to drift apart.
-    return parseScene(serializeScene(scene), "").diagnostics;
+    // The loader's own rules, by the loader: no second copy of them to drift apart. A file mesh is
+    // the one the scene holds (already within the limits when it was read), not the file again.
+    SceneReadOptions options;
+    options.loadMeshFile = [&scene](const MeshFileRequest& request) {
+        MeshFileData held;
+        for (const SceneBody& body : scene.bodies) {
+            // Matched on what the text says: it was serialised without a folder, so it resolves elsewhere.
+            const std::optional<MeshFileReference>& reference = body.meshFile;
+            if (!reference || reference->file != request.reference.file || reference->scale != request.reference.scale ||
+                reference->upAxis != request.reference.upAxis || !body.body.shape.mesh)
+                continue;
+            held.vertices = body.body.shape.mesh->vertices();
+            held.triangles = body.body.shape.mesh->triangleIndices();
+            return held;
+        }
+        held.error = "the mesh of \"" + request.reference.file + "\" is not in the scene";
+        return held;
+    };
+    return parseScene(serializeScene(scene), "", options).diagnostics;
 }
 
 std::vector<std::string> writtenSettingsKeys(const WorldSettings& settings) {

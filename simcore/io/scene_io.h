@@ -37,21 +37,34 @@ enum class SceneFormat { V1, Thesis };
 // Scene text longer than this is refused (far beyond any real scene; it bounds memory).
 inline constexpr std::uintmax_t kMaxSceneFileBytes = 64u * 1024u * 1024u;
 
+// What reading a scene needs beyond its text: where relative mesh files are, and how to read them
+// (mesh_file.h; simcore_import's importMeshFile). Without a loader a file mesh is an error saying
+// so; every other scene loads the same.
+struct SceneReadOptions {
+    std::filesystem::path sceneFolder;  // relative "file" paths start here; empty: the working directory
+    MeshFileLoader loadMeshFile;        // unset: file meshes cannot be read
+};
+
 // Parses scene text; the format is detected ("format": "interplay.scene" is v1, an "objects" array
 // is the thesis format). `fileName` is used in diagnostics only.
-SceneLoadResult parseScene(std::string_view text, std::string_view fileName);
-SceneLoadResult loadSceneFile(const std::filesystem::path& path);
+SceneLoadResult parseScene(std::string_view text, std::string_view fileName, const SceneReadOptions& options = {});
+// The same from a file; an empty options.sceneFolder becomes the file's own folder.
+SceneLoadResult loadSceneFile(const std::filesystem::path& path, const SceneReadOptions& options = {});
 
-// v1 JSON text. Every number is written so that parsing it gives back the identical float.
-std::string serializeScene(const Scene& scene);
+// v1 JSON text. Every number is written so that parsing it gives back the identical float. Mesh
+// file references are written as references (meshFileText): relative to `sceneFolder` when it is
+// given, else as they were read.
+std::string serializeScene(const Scene& scene, const std::filesystem::path& sceneFolder = {});
 
 // Writes atomically: to a temporary file beside the target, then renamed over it, so a failure
-// never leaves a half-written file. Returns an error message, or nothing on success.
+// never leaves a half-written file; mesh file references are rewritten relative to the target's
+// folder. Returns an error message, or nothing on success.
 std::optional<std::string> saveSceneFile(const Scene& scene, const std::filesystem::path& path);
 
 // What the loader would report about `scene` if it were saved and opened again: every edit the
 // editor makes is checked with this, so it never holds a scene it could not reopen. Diagnostics
 // carry the JSON path of the value (as in the file the scene would save to) and no file name.
+// Meshes read from files are checked as they are in the scene, without reading the files again.
 std::vector<Diagnostic> checkScene(const Scene& scene);
 
 // The keys of the "settings" object a saved file would hold for `settings`, dotted as in

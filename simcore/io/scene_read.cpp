@@ -16,7 +16,8 @@
 //    compound child is refused (no nesting). A child's position defaults to 0, its orientation to
 //    identity, read like a body's.
 //  - meshes: inline "vertices" and "triangles" (TriangleMesh::build's checks, its message at the
-//    triangles' path); height fields: "rows" x "columns" "heights" (HeightField::build's checks).
+//    triangles' path), or a "file" read through SceneReadOptions::loadMeshFile and held to the same
+//    checks (errors at the file's path, naming it as written and as resolved); height fields: "rows" x "columns" "heights" (HeightField::build's checks).
 //    Both on static and kinematic bodies only: a dynamic one is an error at its "motion".
 //  - what a dynamic body's values come to together (both formats): the mass a density gives
 //    (density x volume) within the mass range; the smallest principal moment of inertia at least
@@ -212,6 +213,8 @@ std::optional<std::vector<T>> readList(Reader& r, const Json& j, const std::stri
 // "vertices" and "triangles", inline.
 std::optional<Shape> readMesh(Reader& r, const Json& j, const std::string& path) {
     r.checkKeys(j, path, propertyKeys(PropertyOwner::Mesh), "for a mesh shape");
+    for (const char* key : {"scale", "upAxis"})
+        if (Reader::find(j, key)) r.warning(childPath(path, key), "only a mesh from a file takes this key; it is ignored");
     const auto vertices = readList<Vec3>(r, j, path, "vertices", limits::kMaxMeshVertices, "vertices",
                                          [&](const Json& v, const std::string& p) {
                                              return r.readVec3(v, p, propertyRange(PropertyOwner::Mesh, "vertices"));
@@ -280,6 +283,64 @@ std::optional<Shape> readHeightField(Reader& r, const Json& j, const std::string
         return std::nullopt;
     }
     return Shape::heightFieldOf(std::move(built.field));
+}
+
+// A mesh given by "file" (and "scale", "upAxis"): read through the options' loader, then held to
+// the limits of an inline mesh by TriangleMesh::build. `reference` is set on success.
+std::optional<Shape> readMeshFile(Reader& r, const Json& j, const std::string& path, const SceneReadOptions& options,
+                                  std::optional<MeshFileReference>& reference) {
+    r.checkKeys(j, path, propertyKeys(PropertyOwner::Mesh), "for a mesh shape");
+    const std::string filePath = childPath(path, "file");
+    if (Reader::find(j, "vertices") || Reader::find(j, "triangles")) {
+        r.error(filePath, "a mesh takes either a file or vertices and triangles, not both");
+        return std::nullopt;
+    }
+    MeshFileReference read;
+    const auto file = r.readString(*Reader::find(j, "file"), filePath);
+    if (!file) return std::nullopt;
+    if (file->empty()) {
+        r.error(filePath, "the file name is empty");
+        return std::nullopt;
+    }
+    read.file = *file;
+    const std::string scalePath = childPath(path, "scale");
+    if (!r.optionalVec3(j, path, "scale", propertyRange(PropertyOwner::Mesh, "scale"), read.scale)) return std::nullopt;
+    if (glm::any(glm::lessThan(glm::abs(read.scale), Vec3(float(limits::kSize.min))))) {
+        r.error(scalePath, "every scale factor must be at least " + io_detail::formatNumber(limits::kSize.min) +
+                               " in size (a negative one mirrors the mesh)");
+        return std::nullopt;
+    }
+    if (const Json* up = Reader::find(j, "upAxis")) {
+        const std::string upPath = childPath(path, "upAxis");
+        const auto name = r.readString(*up, upPath);
+        if (!name) return std::nullopt;
+        const std::optional<UpAxis> axis = parseUpAxis(*name);
+        if (!axis) {
+            r.error(upPath, "unknown up axis '" + *name + "' (expected y, z or x)");
+            return std::nullopt;
+        }
+        read.upAxis = *axis;
+    }
+    read.resolvedPath = resolveMeshFile(read.file, options.sceneFolder);
+    const std::string named = "\"" + read.file + "\" (" + read.resolvedPath.string() + ")";
+    if (!options.loadMeshFile) {
+        r.error(filePath, "cannot read the mesh file " + named + ": this program reads scenes without the mesh importer");
+        return std::nullopt;
+    }
+    MeshFileData data = options.loadMeshFile(MeshFileRequest{read});
+    if (!data.error.empty()) {
+        r.error(filePath, data.error.find(read.resolvedPath.string()) == std::string::npos
+                              ? "cannot read the mesh file " + named + ": " + data.error
+                              : data.error);
+        return std::nullopt;
+    }
+    TriangleMesh::BuildResult built = TriangleMesh::build(std::move(data.vertices), std::move(data.triangles));
+    if (!built.mesh) {
+        r.error(filePath, "cannot build the mesh of " + named + ": " + built.error);
+        return std::nullopt;
+    }
+    reference = std::move(read);
+    return Shape::triangleMesh(std::move(built.mesh));
 }
 
 std::optional<Shape> readShape(Reader& r, const Json& j, const std::string& path, Nesting nesting) {
@@ -361,7 +422,8 @@ std::optional<Quat> readOrientation(Reader& r, const Json& v, const std::string&
     return io_detail::normalisedOrientation(r, Quat(c[0], c[1], c[2], c[3]), path);
 }
 
-std::optional<SceneBody> readBody(Reader& r, const Json& b, const std::string& path, std::size_t index) {
+std::optional<SceneBody> readBody(Reader& r, const Json& b, const std::string& path, std::size_t index,
+                                  const SceneReadOptions& options) {
     if (!r.expectObject(b, path)) return std::nullopt;
     r.checkKeys(b, path, propertyKeys(PropertyOwner::Body));
     const int errorsBefore = r.errorCount();
@@ -382,8 +444,14 @@ std::optional<SceneBody> readBody(Reader& r, const Json& b, const std::string& p
         }
     }
 
-    if (const Json* shape = r.require(b, path, "shape"))
-        if (auto parsed = readShape(r, *shape, childPath(path, "shape"), Nesting::BodyShape)) s.shape = std::move(*parsed);
+    if (const Json* shape = r.require(b, path, "shape")) {
+        const std::string shapePath = childPath(path, "shape");
+        const Json* type = shape->is_object() ? Reader::find(*shape, "type") : nullptr;
+        const bool meshFile = type && *type == "mesh" && Reader::find(*shape, "file");
+        std::optional<Shape> parsed = meshFile ? readMeshFile(r, *shape, shapePath, options, out.meshFile)
+                                               : readShape(r, *shape, shapePath, Nesting::BodyShape);
+        if (parsed) s.shape = std::move(*parsed);
+    }
 
     if (const std::string problem = validation::dynamicShapeProblem(s.shape.type);
         s.motion == MotionType::Dynamic && !problem.empty())
@@ -575,7 +643,7 @@ std::optional<SceneJoint> readJoint(Reader& r, const Json& j, const std::string&
     return out;
 }
 
-std::optional<Scene> readV1(const Json& root, Reader& r) {
+std::optional<Scene> readV1(const Json& root, Reader& r, const SceneReadOptions& options) {
     r.checkKeys(root, "", {"format", "version", "settings", "bodies", "joints"});
 
     // A wrong or missing format tag means this is not a scene at all, and a newer version may give
@@ -612,7 +680,7 @@ std::optional<Scene> readV1(const Json& root, Reader& r) {
     if (const Json* bodies = r.require(root, "", "bodies"); bodies && r.expectArray(*bodies, "/bodies")) {
         scene.bodies.reserve(bodies->size());
         for (std::size_t i = 0; i < bodies->size() && !r.full(); ++i) {
-            if (auto body = readBody(r, (*bodies)[i], childPath("/bodies", i), i)) scene.bodies.push_back(std::move(*body));
+            if (auto body = readBody(r, (*bodies)[i], childPath("/bodies", i), i, options)) scene.bodies.push_back(std::move(*body));
         }
         names = bodyNames(*bodies);
     }
@@ -631,7 +699,7 @@ std::optional<Scene> readV1(const Json& root, Reader& r) {
 
 }  // namespace
 
-SceneLoadResult parseScene(std::string_view text, std::string_view fileName) {
+SceneLoadResult parseScene(std::string_view text, std::string_view fileName, const SceneReadOptions& options) {
     SceneLoadResult result;
     const std::string file(fileName);
     std::optional<Json> root = io_detail::parseJson(text, file, result.diagnostics);
@@ -647,7 +715,7 @@ SceneLoadResult parseScene(std::string_view text, std::string_view fileName) {
         scene = io_detail::importThesisScene(*root, reader);
         bodiesPath = "/objects";
     } else {
-        scene = readV1(*root, reader);
+        scene = readV1(*root, reader, options);
     }
     // Limits on what the values of a body come to together (mass from density, inertia), which
     // no single value shows: the same for both formats.

@@ -134,12 +134,23 @@ OrderedJson shapeJson(const Shape& shape) {
     return j;
 }
 
-OrderedJson bodyJson(const SceneBody& sb) {
+// A mesh read from a file, as its reference: the triangles stay in the file.
+OrderedJson meshFileJson(const MeshFileReference& reference, const std::filesystem::path& sceneFolder) {
+    OrderedJson j = OrderedJson::object();
+    j["type"] = "mesh";
+    j["file"] = meshFileText(reference, sceneFolder);
+    j["scale"] = vec3(reference.scale);
+    j["upAxis"] = std::string(upAxisName(reference.upAxis));
+    return j;
+}
+
+OrderedJson bodyJson(const SceneBody& sb, const std::filesystem::path& sceneFolder) {
     const BodyCreationSettings& b = sb.body;
     OrderedJson j = OrderedJson::object();
     j["name"] = b.name;
     j["motion"] = motionName(b.motion);
-    j["shape"] = shapeJson(b.shape);
+    const bool fromFile = sb.meshFile && b.shape.type == ShapeType::Mesh;
+    j["shape"] = fromFile ? meshFileJson(*sb.meshFile, sceneFolder) : shapeJson(b.shape);
     j["position"] = vec3(b.position);
     j["orientation"] = quaternion(b.orientation);
     j["linearVelocity"] = vec3(b.linearVelocity);
@@ -226,13 +237,13 @@ void writeJson(std::string& out, const OrderedJson& v, int indent) {
 
 }  // namespace
 
-std::string serializeScene(const Scene& scene) {
+std::string serializeScene(const Scene& scene, const std::filesystem::path& sceneFolder) {
     OrderedJson root = OrderedJson::object();
     root["format"] = kFormatTag;
     root["version"] = kFormatVersion;
     root["settings"] = settingsJson(scene.settings);
     OrderedJson bodies = OrderedJson::array();
-    for (const SceneBody& b : scene.bodies) bodies.push_back(bodyJson(b));
+    for (const SceneBody& b : scene.bodies) bodies.push_back(bodyJson(b, sceneFolder));
     root["bodies"] = std::move(bodies);
     OrderedJson joints = OrderedJson::array();
     for (const SceneJoint& j : scene.joints) joints.push_back(jointJson(j, scene.bodies));
