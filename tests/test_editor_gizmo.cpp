@@ -3,7 +3,7 @@
 // along x only, by the distance the cursor's pixels mean on that axis, in one undo entry that Ctrl+Z
 // takes back; E shows the rotate gizmo and a ring drag turns the body about the ring's axis; Ctrl
 // snaps to the grid and angle steps of the settings; a multi-selection moves together; during
-// play the live body follows; Escape and a right click cancel; a jointed body carries its anchors.
+// play the live body follows, and several bodies turned during a run turn from their live poses; Escape and a right click cancel; a jointed body carries its anchors.
 
 #include "app/document/document_manager.h"
 #include "app/document/scene_document.h"
@@ -51,6 +51,7 @@ private slots:
     void multiSelectionMovesTogether();
     void localSpaceFollowsTheBodysAxes();
     void duringPlayTheBodyFollows();
+    void duringARunSeveralTurnFromTheirLivePoses();
     void escapeOrRightClickCancels_data();
     void escapeOrRightClickCancels();
     void movingAJointedBodyCarriesItsAnchors();
@@ -366,6 +367,60 @@ void TestEditorGizmo::duringPlayTheBodyFollows() {
     QVERIFY2(std::abs(live.z - liveStart.z - authoredMoved) < 0.05f,
              qPrintable(QStringLiteral("live %1, authored %2").arg(live.z - liveStart.z).arg(authoredMoved)));
     QCOMPARE(document()->undoStack()->count(), 1);
+}
+
+void TestEditorGizmo::duringARunSeveralTurnFromTheirLivePoses() {
+    // Several bodies turned during a run turn from where the run has them, as one body does; they
+    // used to jump to their authored poses. Paused after the fall, so that only the turn moves them.
+    const int sphere = bodyNamed("sphere"), cylinder = bodyNamed("cylinder");
+    select({sphere, cylinder});
+    interplay::SimulationController* simulation = m_window->simulation();
+    const auto live = [&](int body) { return simulation->bodyIds()[std::size_t(body)]; };
+    const glm::vec3 authoredStart = document()->body(cylinder).body.position;
+    simulation->play();
+    QTRY_VERIFY_WITH_TIMEOUT(glm::length(simulation->world()->position(live(cylinder)) - authoredStart) > 0.3f, 10000);
+    simulation->pause();
+    const simcore::World* world = simulation->world();
+    const glm::vec3 liveStart[] = {world->position(live(sphere)), world->position(live(cylinder))};
+    const glm::quat liveTurnStart[] = {world->orientation(live(sphere)), world->orientation(live(cylinder))};
+    const simcore::BodyCreationSettings authored[] = {document()->body(sphere).body, document()->body(cylinder).body};
+
+    QTest::keyClick(viewport(), Qt::Key_E);
+    viewport()->grabViewport();
+    const interplay::gizmo::Placement p = placement();
+    const glm::vec3 arm = grabPoint(Handle::RingY) - p.center;
+    viewport()->setFocus();
+    const QPoint from = pixelOf(p.center + arm);
+    QTest::mousePress(viewport(), Qt::LeftButton, {}, from);
+    QPoint to = from;
+    for (int step = 1; step <= 6; ++step) {
+        to = pixelOf(p.center + glm::angleAxis(glm::radians(10.0f * step), glm::vec3(0.0f, 1.0f, 0.0f)) * arm);
+        QTest::mouseMove(viewport(), to);
+    }
+    QTest::mouseRelease(viewport(), Qt::LeftButton, {}, to);
+
+    QCOMPARE(document()->undoStack()->count(), 1);
+    QCOMPARE(document()->undoStack()->text(0), QStringLiteral("Rotate 2 Bodies"));
+    const int bodies[] = {sphere, cylinder};
+    for (int i = 0; i < 2; ++i) {
+        const simcore::BodyCreationSettings& turned = document()->body(bodies[i]).body;
+        const glm::quat turn = turned.orientation * glm::inverse(authored[i].orientation);
+        QVERIFY2(glm::degrees(glm::angle(turn)) > 40.0f, qPrintable(QString::number(glm::degrees(glm::angle(turn)))));
+        // The live body moved and turned by what the authored one did, from its live pose: the
+        // whole run's fall stays (0.3 m or more), where a jump would have undone it.
+        const glm::vec3 liveMoved = world->position(live(bodies[i])) - liveStart[i];
+        const glm::vec3 authoredMoved = turned.position - authored[i].position;
+        QVERIFY2(glm::length(liveMoved - authoredMoved) < 1e-4f,
+                 qPrintable(QStringLiteral("body %1: live moved %2 m, authored %3 m")
+                                .arg(i)
+                                .arg(glm::length(liveMoved))
+                                .arg(glm::length(authoredMoved))));
+        const glm::quat liveTurn = world->orientation(live(bodies[i])) * glm::inverse(liveTurnStart[i]);
+        QVERIFY2(std::abs(glm::dot(liveTurn, turn)) > 1.0f - 1e-5f, qPrintable(QStringLiteral("body %1").arg(i)));
+    }
+    // Undo turns the live bodies back to where the run had them.
+    document()->undoStack()->undo();
+    for (int i = 0; i < 2; ++i) QVERIFY(glm::length(world->position(live(bodies[i])) - liveStart[i]) < 1e-4f);
 }
 
 void TestEditorGizmo::escapeOrRightClickCancels_data() {

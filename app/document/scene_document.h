@@ -32,11 +32,18 @@ enum class BodyField {
     Position,
     Orientation,
     Pose,  // position, orientation and velocities at once (Apply Simulated Pose)
+    Turn,  // position and orientation by one turn of several bodies about their centre (the gizmo)
     LinearVelocity,
     AngularVelocity,
     Color,
     Ccd,
 };
+
+// Whether an edit of `field` moves or turns bodies, so that the joints on them ride along.
+constexpr bool isPlacementField(BodyField field) {
+    return field == BodyField::Position || field == BodyField::Orientation || field == BodyField::Pose ||
+           field == BodyField::Turn;
+}
 
 // What an edit of a joint changed (continuous edits of the same field merge).
 enum class JointField {

@@ -203,7 +203,7 @@ template class ChangeObjects<simcore::SceneJoint>;
 MoveBodies::MoveBodies(SceneDocument* document, const QString& text, BodyField field, QList<int> indices,
                        std::vector<simcore::SceneBody> after, bool mergeable)
     : QUndoCommand(text), m_field(field), m_indices(indices), m_mergeable(mergeable) {
-    Q_ASSERT(field == BodyField::Position || field == BodyField::Orientation || field == BodyField::Pose);
+    Q_ASSERT(isPlacementField(field));
     // Carried from where the bodies are now: a merged drag carries the joints step by step, as the
     // bodies go.
     std::vector<std::pair<int, simcore::SceneJoint>> carried = jointsCarriedWith(document->scene(), indices, after);
@@ -240,7 +240,7 @@ void MoveBodies::updateObsolete() {
 
 QUndoCommand* changeBodiesCommand(SceneDocument* document, const QString& text, BodyField field, QList<int> indices,
                                   std::vector<simcore::SceneBody> after, bool mergeable) {
-    if (field == BodyField::Position || field == BodyField::Orientation || field == BodyField::Pose)
+    if (isPlacementField(field))
         return new MoveBodies(document, text, field, std::move(indices), std::move(after), mergeable);
     return new ChangeBodies(document, text, field, std::move(indices), std::move(after), mergeable);
 }

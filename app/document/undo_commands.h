@@ -165,7 +165,7 @@ extern template class ChangeObjects<simcore::SceneJoint>;
 
 // Moves or turns bodies (a drag, the Inspector's position and rotation, Apply Simulated Pose) with
 // the joints that ride on them (jointsCarriedWith), as one command: a ChangeBodies of `field`
-// (Position, Orientation or Pose) and a ChangeJoints of their Placement. Merges like ChangeObjects,
+// (isPlacementField) and a ChangeJoints of their Placement. Merges like ChangeObjects,
 // so a drag is one history entry with its joints.
 class MoveBodies : public QUndoCommand {
 public:

@@ -93,7 +93,7 @@ bool GizmoTool::press(const QPointF& position) {
     // moves each of them too.
     m_field = *m_mode == gizmo::Mode::Move ? BodyField::Position
               : m_indices.size() == 1      ? BodyField::Orientation
-                                           : BodyField::Pose;
+                                           : BodyField::Turn;
     m_pushed = false;
     emit repaintNeeded();
     return true;
@@ -110,7 +110,7 @@ void GizmoTool::drag(const QPointF& position, Qt::KeyboardModifiers modifiers) {
         // The same offset for each, so a run's live bodies follow as the authored ones go.
         for (simcore::SceneBody& body : after) body.body.position += motion.translation;
     } else {
-        if (m_field == BodyField::Pose) {
+        if (m_field == BodyField::Turn) {
             // About the authored centre, as the command sets authored poses (the same point as the
             // gizmo's live centre until a run moves the bodies).
             glm::vec3 center(0.0f);
@@ -119,7 +119,7 @@ void GizmoTool::drag(const QPointF& position, Qt::KeyboardModifiers modifiers) {
         }
         for (simcore::SceneBody& body : after) {
             body.body.orientation = glm::normalize(motion.rotation * body.body.orientation);
-            if (m_field == BodyField::Pose) body.body.position = motion.apply(body.body.position);
+            if (m_field == BodyField::Turn) body.body.position = motion.apply(body.body.position);
         }
     }
     push(std::move(after));
