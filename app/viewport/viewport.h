@@ -66,6 +66,8 @@ public:
     std::optional<gizmo::Mode> gizmoMode() const { return m_tool.gizmo().mode(); }
     void setGizmoSpace(gizmo::Space space) { m_tool.gizmo().setSpace(space); }
     gizmo::Space gizmoSpace() const { return m_tool.gizmo().space(); }
+    void setGizmoSnapping(bool snapping) { m_tool.gizmo().setSnapping(snapping); }
+    bool gizmoSnapping() const { return m_tool.gizmo().snapping(); }
     // Where the gizmo is drawn now, if it is.
     std::optional<gizmo::Placement> gizmoPlacement() const { return m_tool.gizmo().placement(); }
 
