@@ -53,6 +53,8 @@ const EditorControl kEditorControls[] = {
      QT_TRANSLATE_NOOP("EditorControls", "front / right / top view: look along -Z / -X / -Y (Y is up), keeping the target and distance; also in the View menu")},
     {QT_TRANSLATE_NOOP("EditorControls", "numpad 5"),
      QT_TRANSLATE_NOOP("EditorControls", "orthographic / perspective (View → Orthographic); clicks and drags pick along parallel rays")},
+    {QT_TRANSLATE_NOOP("EditorControls", "Ctrl+B / 1 … 9 / Ctrl+1 … 9"),
+     QT_TRANSLATE_NOOP("EditorControls", "camera bookmarks (View → Bookmarks, as in Unreal): add the view under a name / show bookmark 1 to 9 / store the view in it (a new one after the last); rename and delete them in the menu; saved with the scene, each change one undo entry")},
     {QT_TRANSLATE_NOOP("EditorControls", "F1"),
      QT_TRANSLATE_NOOP("EditorControls", "this list of controls (Help → Keyboard and Mouse)")},
 };

@@ -15,6 +15,7 @@
 #include "app/panels/simulation_settings_panel.h"
 #include "app/panels/timeline_bar.h"
 #include "app/simulation/simulation_controller.h"
+#include "app/viewport/camera_bookmarks.h"
 #include "app/viewport/debug_draw_options.h"
 #include "app/viewport/viewport.h"
 
@@ -165,6 +166,7 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_settingsModel, &SimulationSettingsModel::rejected, this, showRejection);
     connect(m_inspector, &InspectorPanel::rejected, this, showRejection);
     connect(m_sceneActions, &SceneActions::rejected, this, showRejection);
+    connect(m_bookmarks, &CameraBookmarks::rejected, this, showRejection);
     connect(m_files, &DocumentManager::statusMessage, statusBar(), &QStatusBar::showMessage);
     // A long message (several load warnings, the speed bound) is cut at the permanent labels:
     // hovering the status bar shows all of it.
@@ -288,6 +290,9 @@ void MainWindow::createActions() {
                      tr("Switch between orthographic and perspective projection (numpad 5)"));
     a->setCheckable(true);
     connect(a, &QAction::toggled, m_viewport, &Viewport::setOrthographic);
+    // A bookmark shown may switch the projection: the check mark follows the camera.
+    connect(m_viewport, &Viewport::cameraChanged, a, [this, a] { a->setChecked(m_viewport->camera().isOrthographic()); });
+    m_bookmarks = new CameraBookmarks(m_document, m_viewport, this);
     // The transform gizmo: W and E as in Godot and Unity (R held already turns a dragged body);
     // neither checked shows none. L for local axes, which Godot and Unity give no one key.
     auto* gizmoModes = new QActionGroup(this);
@@ -521,6 +526,7 @@ void MainWindow::createMenusAndToolBars() {
     for (const char* name : {"viewFront", "viewBack", "viewRight", "viewLeft", "viewTop", "viewBottom", "orthographic"}) {
         m_viewMenu->addAction(action(QString::fromLatin1(name)));
     }
+    m_viewMenu->addMenu(m_bookmarks->menu());
     m_viewMenu->addSeparator();
     const char* gizmoActions[] = {"gizmoMove", "gizmoRotate", "gizmoLocal", "gizmoSnap"};
     for (const char* name : gizmoActions) m_viewMenu->addAction(action(QString::fromLatin1(name)));

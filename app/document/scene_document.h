@@ -137,6 +137,7 @@ public:
     void setBody(int index, simcore::SceneBody body, BodyField field);
     void setJoint(int index, simcore::SceneJoint joint, JointField field);
     void setSettings(const simcore::WorldSettings& settings);
+    void setCameraBookmarks(std::vector<simcore::CameraBookmark> bookmarks);
 
 signals:
     void modifiedChanged(bool modified);
@@ -151,6 +152,7 @@ signals:
     void bodyMoved(int from, int to);
     void bodyChanged(int index, interplay::BodyField field);
     void settingsChanged();
+    void cameraBookmarksChanged();
     void jointAboutToBeInserted(int index);
     void jointInserted(int index);
     void jointAboutToBeRemoved(int index);

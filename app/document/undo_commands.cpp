@@ -270,4 +270,21 @@ void ChangeSettings::undo() {
     m_document->setSettings(m_before);
 }
 
+// ---- ChangeCameraBookmarks ----------------------------------------------------------------------
+
+ChangeCameraBookmarks::ChangeCameraBookmarks(SceneDocument* document, const QString& text,
+                                             std::vector<simcore::CameraBookmark> after)
+    : QUndoCommand(text), m_document(document), m_before(document->scene().editor.cameraBookmarks),
+      m_after(std::move(after)) {
+    setObsolete(m_before == m_after);
+}
+
+void ChangeCameraBookmarks::redo() {
+    m_document->setCameraBookmarks(m_after);
+}
+
+void ChangeCameraBookmarks::undo() {
+    m_document->setCameraBookmarks(m_before);
+}
+
 }  // namespace interplay

@@ -209,4 +209,18 @@ private:
     bool m_mergeable;
 };
 
+// Replaces the scene's camera bookmarks (added, renamed, deleted or re-aimed): an edit of the
+// document like any other, though the world never sees it.
+class ChangeCameraBookmarks : public QUndoCommand {
+public:
+    ChangeCameraBookmarks(SceneDocument* document, const QString& text, std::vector<simcore::CameraBookmark> after);
+    void redo() override;
+    void undo() override;
+
+private:
+    SceneDocument* m_document;
+    std::vector<simcore::CameraBookmark> m_before;
+    std::vector<simcore::CameraBookmark> m_after;
+};
+
 }  // namespace interplay

@@ -46,6 +46,8 @@ public:
 
     Camera& camera() { return m_camera; }
     const Camera& camera() const { return m_camera; }
+    // Shows the view of `camera` (a bookmark's), instead of any framing still pending.
+    void setCamera(const Camera& camera);
     // Aims the camera at the movable bodies (all bodies if none move) on the next frame, when the
     // widget's size is known.
     void frameScene();
