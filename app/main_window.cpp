@@ -569,9 +569,8 @@ void MainWindow::createMenusAndToolBars() {
     addBar->addAction(m_sceneActions->duplicateAction());
     addBar->addAction(m_sceneActions->deleteAction());
 
-    // The View menu's gizmo actions as buttons over the viewport, as Godot's (the top row is full).
-    auto* gizmoBar = new QToolBar(tr("Gizmo"));
-    qobject_cast<QVBoxLayout*>(centralWidget()->layout())->insertWidget(0, gizmoBar);
+    // The View menu's gizmo actions, as buttons that show which are on.
+    QToolBar* gizmoBar = addToolBar(tr("Gizmo"));
     gizmoBar->setObjectName(QStringLiteral("gizmoToolBar"));
     gizmoBar->setToolButtonStyle(Qt::ToolButtonTextOnly);
     for (const char* name : gizmoActions) gizmoBar->addAction(action(QString::fromLatin1(name)));
