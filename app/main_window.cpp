@@ -11,11 +11,13 @@
 #include "app/panels/import_geometry_dialog.h"
 #include "app/panels/inspector_panel.h"
 #include "app/panels/live_state_panel.h"
+#include "app/panels/preferences_dialog.h"
 #include "app/panels/profiler_panel.h"
 #include "app/panels/simulation_settings_model.h"
 #include "app/panels/simulation_settings_panel.h"
 #include "app/panels/timeline_bar.h"
 #include "app/simulation/simulation_controller.h"
+#include "app/viewport/camera_bookmarks.h"
 #include "app/viewport/debug_draw_options.h"
 #include "app/viewport/viewport.h"
 
@@ -97,6 +99,17 @@ bool hasOwnTextHistory(const QObject* target, bool undo) {
     return quick.isValid() && quick.toBool();
 }
 
+// One window of its kind, raised again on later presses, that stays open while the user tries
+// what it says or sets.
+template <typename Dialog>
+void showSingleDialog(QWidget* parent) {
+    auto* dialog = parent->findChild<Dialog*>();
+    if (!dialog) dialog = new Dialog(parent);
+    dialog->show();
+    dialog->raise();
+    dialog->activateWindow();
+}
+
 bool isDropDown(const QObject* target) {
     return qobject_cast<const QComboBox*>(target) || target->inherits("QQuickComboBox");
 }
@@ -170,6 +183,7 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_settingsModel, &SimulationSettingsModel::rejected, this, showRejection);
     connect(m_inspector, &InspectorPanel::rejected, this, showRejection);
     connect(m_sceneActions, &SceneActions::rejected, this, showRejection);
+    connect(m_bookmarks, &CameraBookmarks::rejected, this, showRejection);
     connect(m_files, &DocumentManager::statusMessage, statusBar(), &QStatusBar::showMessage);
     // A long message (several load warnings, the speed bound) is cut at the permanent labels:
     // hovering the status bar shows all of it.
@@ -300,6 +314,9 @@ void MainWindow::createActions() {
                      tr("Switch between orthographic and perspective projection (numpad 5)"));
     a->setCheckable(true);
     connect(a, &QAction::toggled, m_viewport, &Viewport::setOrthographic);
+    // A bookmark shown may switch the projection: the check mark follows the camera.
+    connect(m_viewport, &Viewport::cameraChanged, a, [this, a] { a->setChecked(m_viewport->camera().isOrthographic()); });
+    m_bookmarks = new CameraBookmarks(m_document, m_viewport, this);
     // The transform gizmo: W and E as in Godot and Unity (R held already turns a dragged body);
     // neither checked shows none. L for local axes, which Godot and Unity give no one key.
     auto* gizmoModes = new QActionGroup(this);
@@ -308,6 +325,8 @@ void MainWindow::createActions() {
                                       tr("Show arrows and plane handles on the selection to move it (W)"));
     QAction* rotateGizmo = createAction(gizmoModes, QStringLiteral("gizmoRotate"), tr("Rotate &Gizmo"), Qt::Key_E,
                                         tr("Show rings on the selection to turn it (E)"));
+    moveGizmo->setIconText(tr("Move"));
+    rotateGizmo->setIconText(tr("Rotate"));
     for (QAction* mode : {moveGizmo, rotateGizmo}) {
         mode->setCheckable(true);
         gizmoModes->addAction(mode);
@@ -322,8 +341,21 @@ void MainWindow::createActions() {
     a = createAction(this, QStringLiteral("gizmoLocal"), tr("&Local Gizmo Axes"), Qt::Key_L,
                      tr("Align the gizmo with the active body's axes instead of the world's (L)"));
     a->setCheckable(true);
+    a->setIconText(tr("Local"));
     connect(a, &QAction::toggled, m_viewport,
             [this](bool local) { m_viewport->setGizmoSpace(local ? gizmo::Space::Local : gizmo::Space::World); });
+    // Y as in Godot; Ctrl held inverts it for one drag.
+    a = createAction(this, QStringLiteral("gizmoSnap"), tr("&Snap Gizmo"), Qt::Key_Y,
+                     tr("Snap gizmo drags to the grid and angle steps of the Preferences; Ctrl inverts it (Y)"));
+    a->setIconText(tr("Snap"));
+    a->setCheckable(true);
+    connect(a, &QAction::toggled, m_viewport, &Viewport::setGizmoSnapping);
+    // The platform's key, else Ctrl+, (GNOME's, KDE's and, as Cmd+, macOS's): X11 alone has none.
+    a = createAction(this, QStringLiteral("preferences"), tr("Pre&ferences…"),
+                     QKeySequence::keyBindings(QKeySequence::Preferences).value(0, QKeySequence(Qt::CTRL | Qt::Key_Comma)),
+                     tr("The editor's settings: the gizmo's snapping steps"));
+    a->setMenuRole(QAction::PreferencesRole);
+    connect(a, &QAction::triggered, this, [this] { showSingleDialog<PreferencesDialog>(this); });
 
     // Simulation.
     m_playAction = createAction(this, QStringLiteral("play"), tr("&Play"), Qt::Key_Space,
@@ -485,6 +517,8 @@ void MainWindow::createMenusAndToolBars() {
     edit->addAction(m_sceneActions->invertSelectionAction());
     edit->addSeparator();
     edit->addAction(action(QStringLiteral("applyPose")));
+    edit->addSeparator();
+    edit->addAction(action(QStringLiteral("preferences")));
 
     // Menu order: the box first (the actions themselves are in ShapeType order).
     using simcore::ShapeType;
@@ -517,10 +551,10 @@ void MainWindow::createMenusAndToolBars() {
     for (const char* name : {"viewFront", "viewBack", "viewRight", "viewLeft", "viewTop", "viewBottom", "orthographic"}) {
         m_viewMenu->addAction(action(QString::fromLatin1(name)));
     }
+    m_viewMenu->addMenu(m_bookmarks->menu());
     m_viewMenu->addSeparator();
-    for (const char* name : {"gizmoMove", "gizmoRotate", "gizmoLocal"}) {
-        m_viewMenu->addAction(action(QString::fromLatin1(name)));
-    }
+    const char* gizmoActions[] = {"gizmoMove", "gizmoRotate", "gizmoLocal", "gizmoSnap"};
+    for (const char* name : gizmoActions) m_viewMenu->addAction(action(QString::fromLatin1(name)));
     m_viewMenu->addSeparator();
     for (QDockWidget* dock : findChildren<QDockWidget*>()) m_viewMenu->addAction(dock->toggleViewAction());
 
@@ -559,20 +593,19 @@ void MainWindow::createMenusAndToolBars() {
     addBar->addSeparator();
     addBar->addAction(m_sceneActions->duplicateAction());
     addBar->addAction(m_sceneActions->deleteAction());
+
+    // The View menu's gizmo actions, as buttons that show which are on.
+    QToolBar* gizmoBar = addToolBar(tr("Gizmo"));
+    gizmoBar->setObjectName(QStringLiteral("gizmoToolBar"));
+    gizmoBar->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    for (const char* name : gizmoActions) gizmoBar->addAction(action(QString::fromLatin1(name)));
 }
 
 // Last, so it stays the rightmost menu whatever the others add.
 void MainWindow::createHelpMenu() {
     QAction* controls = createAction(this, QStringLiteral("helpControls"), tr("&Keyboard and Mouse"),
                                      QKeySequence::HelpContents, tr("List the editor's keyboard and mouse controls"));
-    connect(controls, &QAction::triggered, this, [this] {
-        // One window, raised again on later presses, that stays open while the user tries the controls.
-        auto* dialog = findChild<HelpDialog*>();
-        if (!dialog) dialog = new HelpDialog(this);
-        dialog->show();
-        dialog->raise();
-        dialog->activateWindow();
-    });
+    connect(controls, &QAction::triggered, this, [this] { showSingleDialog<HelpDialog>(this); });
     QAction* about = createAction(this, QStringLiteral("about"), tr("&About Interplay"), {},
                                   tr("Version, Qt version and engine"));
     about->setMenuRole(QAction::AboutRole);

@@ -18,6 +18,7 @@ class QTreeView;
 namespace interplay {
 
 class AccuracyPanel;
+class CameraBookmarks;
 class DebugDrawOptions;
 class DocumentManager;
 class InspectorPanel;
@@ -53,6 +54,7 @@ public:
     TimelineBar* timelineBar() const { return m_timelineBar; }
     AccuracyPanel* accuracyPanel() const { return m_accuracy; }
     DebugDrawOptions* debugDrawOptions() const { return m_debugDraw; }
+    CameraBookmarks* cameraBookmarks() const { return m_bookmarks; }
     QAction* action(const QString& objectName) const;  // e.g. "play", "save", "addBox"
     // The built-in scene, as at start-up without a file.
     void openDefaultScene();
@@ -107,6 +109,7 @@ private:
     LiveStatePanel* m_liveState = nullptr;
     TimelineBar* m_timelineBar = nullptr;
     AccuracyPanel* m_accuracy = nullptr;
+    CameraBookmarks* m_bookmarks = nullptr;
 
     QMenu* m_viewMenu = nullptr;
     QMenu* m_recentMenu = nullptr;

@@ -1,11 +1,15 @@
 // The viewport's camera views in the whole window, with real OpenGL under Xvfb and real QTest key
 // and mouse events on the viewport: Home frames every body with a margin, numpad 1 / 3 / 7 (Ctrl
 // for the opposite way) look along -Z / -X / -Y, numpad 5 toggles the orthographic projection,
-// under which rays are parallel and a click still selects and a drag still moves a body.
+// under which rays are parallel and a click still selects and a drag still moves a body. Camera
+// bookmarks: Ctrl+B adds the view, Ctrl+N stores it, N shows it again, the menu renames and deletes,
+// each edit one undo entry, and they come back from the saved file.
 
+#include "app/document/document_manager.h"
 #include "app/document/scene_document.h"
 #include "app/main_window.h"
 #include "app/simulation/simulation_controller.h"
+#include "app/viewport/camera_bookmarks.h"
 #include "app/viewport/viewport.h"
 
 #include "simcore/shapes/shape.h"
@@ -16,6 +20,9 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QMenu>
+#include <QTemporaryDir>
+#include <QStatusBar>
 #include <QSurfaceFormat>
 #include <QTest>
 #include <QUndoStack>
@@ -39,6 +46,9 @@ private slots:
     void homeFramesEveryBody();
     void numpadKeysLookAlongTheAxes();
     void numpadFiveTogglesOrthographicAndPickingStillWorks();
+    void bookmarksAreAddedShownRenamedAndDeletedWithUndo();
+    void bookmarksComeBackFromTheSavedFile();
+    void aBadBookmarkNameIsRefused();
 
 private:
     Viewport* viewport() const { return m_window->viewport(); }
@@ -50,6 +60,24 @@ private:
     bool inView(const glm::vec3& world) const {
         const glm::vec3 p = project(world);
         return p.z <= 1.0f && p.x >= 0.0f && p.y >= 0.0f && p.x <= viewport()->width() && p.y <= viewport()->height();
+    }
+
+    // The camera shows `bookmark`'s view (angles as the camera keeps them).
+    void verifyShows(const simcore::CameraBookmark& bookmark) const {
+        const interplay::Camera& camera = viewport()->camera();
+        QCOMPARE(camera.target(), bookmark.target);
+        QCOMPARE(camera.yawDegrees(), bookmark.yawDegrees);
+        QCOMPARE(camera.pitchDegrees(), bookmark.pitchDegrees);
+        QCOMPARE(camera.distance(), bookmark.distance);
+        QCOMPARE(camera.isOrthographic(), bookmark.orthographic);
+        QCOMPARE(m_window->action("orthographic")->isChecked(), bookmark.orthographic);
+    }
+    const std::vector<simcore::CameraBookmark>& bookmarks() const {
+        return m_window->document()->scene().editor.cameraBookmarks;
+    }
+    // The name the next prompt answers with (nothing: cancelled).
+    void answerPrompts(std::optional<QString> name) {
+        m_window->cameraBookmarks()->setNamePrompt([name](const QString&, const QString&) { return name; });
     }
 
     std::unique_ptr<MainWindow> m_window;
@@ -201,6 +229,137 @@ void TestEditorCamera::numpadFiveTogglesOrthographicAndPickingStillWorks() {
     QVERIFY(!viewport()->camera().isOrthographic());
     QVERIFY(!ortho->isChecked());
 
+}
+
+void TestEditorCamera::bookmarksAreAddedShownRenamedAndDeletedWithUndo() {
+    QUndoStack* stack = m_window->document()->undoStack();
+    QVERIFY(bookmarks().empty());
+    // A top view, orthographic, kept as "Plan" with Ctrl+B.
+    QTest::keyClick(viewport(), Qt::Key_7, Qt::KeypadModifier);
+    QTest::keyClick(viewport(), Qt::Key_5, Qt::KeypadModifier);
+    answerPrompts(QStringLiteral("Plan"));
+    QTest::keyClick(viewport(), Qt::Key_B, Qt::ControlModifier);
+    QCOMPARE(bookmarks().size(), std::size_t(1));
+    const simcore::CameraBookmark plan = bookmarks()[0];
+    QCOMPARE(plan.name, std::string("Plan"));
+    QVERIFY(plan.orthographic);
+    QCOMPARE(plan.pitchDegrees, viewport()->camera().pitchDegrees());
+    QVERIFY(plan.pitchDegrees > 88.0f);  // from above
+    QCOMPARE(stack->count(), 1);
+    QCOMPARE(stack->text(0), QStringLiteral("Add Bookmark \u201cPlan\u201d"));
+    QVERIFY(m_window->document()->isModified());
+    QVERIFY(m_window->isWindowModified());
+
+    // An orbited, zoomed perspective view stored in bookmark 2 with Ctrl+2: a new one.
+    QTest::keyClick(viewport(), Qt::Key_5, Qt::KeypadModifier);
+    const QPoint centre = viewport()->rect().center();
+    QTest::mousePress(viewport(), Qt::MiddleButton, {}, centre);
+    for (int i = 1; i <= 8; ++i) QTest::mouseMove(viewport(), centre + QPoint(10 * i, -6 * i));
+    QTest::mouseRelease(viewport(), Qt::MiddleButton, {}, centre + QPoint(80, -48));
+    QTest::keyClick(viewport(), Qt::Key_2, Qt::ControlModifier);
+    QCOMPARE(bookmarks().size(), std::size_t(2));
+    const simcore::CameraBookmark orbited = bookmarks()[1];
+    QCOMPARE(orbited.name, std::string("Bookmark 2"));
+    QVERIFY(!orbited.orthographic);
+    QVERIFY(std::abs(orbited.pitchDegrees - plan.pitchDegrees) > 1.0f);
+    QCOMPARE(stack->count(), 2);
+
+    // 1 and 2 show them; the menu lists them with their keys.
+    QTest::keyClick(viewport(), Qt::Key_1);
+    verifyShows(plan);
+    QTest::keyClick(viewport(), Qt::Key_2);
+    verifyShows(orbited);
+    QCOMPARE(m_window->action("showBookmark1")->text(), QStringLiteral("&1 Plan"));
+    QCOMPARE(m_window->action("showBookmark2")->shortcut(), QKeySequence(Qt::Key_2));
+    QCOMPARE(stack->count(), 2);  // showing is no edit
+
+    // Ctrl+1 stores the view shown in "Plan", keeping its name.
+    QTest::keyClick(viewport(), Qt::Key_1, Qt::ControlModifier);
+    QCOMPARE(bookmarks()[0].name, std::string("Plan"));
+    QCOMPARE(bookmarks()[0], interplay::bookmarkOf(viewport()->camera(), QStringLiteral("Plan")));
+    QCOMPARE(stack->text(2), QStringLiteral("Store View in Bookmark \u201cPlan\u201d"));
+    stack->undo();
+    QCOMPARE(bookmarks()[0], plan);
+
+    // Rename and delete, from the View menu's Bookmarks submenu.
+    auto* renameMenu = m_window->findChild<QMenu*>(QStringLiteral("renameBookmarkMenu"));
+    auto* deleteMenu = m_window->findChild<QMenu*>(QStringLiteral("deleteBookmarkMenu"));
+    QVERIFY(renameMenu && deleteMenu);
+    QCOMPARE(renameMenu->actions().size(), 2);
+    answerPrompts(QStringLiteral("  Floor plan "));
+    renameMenu->actions()[0]->trigger();
+    QCOMPARE(bookmarks()[0].name, std::string("Floor plan"));  // trimmed
+    QCOMPARE(m_window->action("showBookmark1")->text(), QStringLiteral("&1 Floor plan"));
+    deleteMenu->actions()[0]->trigger();
+    QCOMPARE(bookmarks().size(), std::size_t(1));
+    QCOMPARE(bookmarks()[0], orbited);
+    QTest::keyClick(viewport(), Qt::Key_1);  // now the orbited view
+    verifyShows(orbited);
+    QCOMPARE(stack->text(stack->count() - 1), QStringLiteral("Delete Bookmark \u201cFloor plan\u201d"));
+
+    // Undo takes each back, to a clean document.
+    stack->undo();
+    QCOMPARE(bookmarks().size(), std::size_t(2));
+    QCOMPARE(bookmarks()[0].name, std::string("Floor plan"));
+    stack->undo();
+    QCOMPARE(bookmarks()[0], plan);
+    while (stack->canUndo()) stack->undo();
+    QVERIFY(bookmarks().empty());
+    QVERIFY(!m_window->document()->isModified());
+    QVERIFY(!m_window->action("showBookmark1"));
+}
+
+void TestEditorCamera::bookmarksComeBackFromTheSavedFile() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("bookmarked.json"));
+    auto& prompts = m_window->documentManager()->prompts();
+    prompts.chooseFile = [path](interplay::DocumentManager::FileChoice, const QString&, const QString&) { return path; };
+    prompts.error = [](const QString& title, const QString& text, const QString& details) {
+        QFAIL(qPrintable(title + ": " + text + '\n' + details));
+    };
+    QTest::keyClick(viewport(), Qt::Key_3, Qt::KeypadModifier);
+    answerPrompts(QStringLiteral("Side"));
+    QTest::keyClick(viewport(), Qt::Key_B, Qt::ControlModifier);
+    const simcore::CameraBookmark side = bookmarks().at(0);
+    QVERIFY(m_window->documentManager()->saveAs());
+    QVERIFY(!m_window->document()->isModified());
+
+    // Opened again (after looking elsewhere), the bookmark is there and shows the same view.
+    QVERIFY(m_window->documentManager()->newScene());
+    QVERIFY(bookmarks().empty());
+    QString error;
+    QVERIFY2(m_window->documentManager()->openFile(path, &error), qPrintable(error));
+    QCOMPARE(bookmarks().size(), std::size_t(1));
+    QCOMPARE(bookmarks()[0], side);
+    viewport()->grabViewport();  // the opened scene's framing happens on its first frame
+    QTest::keyClick(viewport(), Qt::Key_1);
+    verifyShows(side);
+    viewport()->grabViewport();  // and a frame drawn after does not reframe it
+    verifyShows(side);
+    QVERIFY(!m_window->document()->isModified());
+}
+
+void TestEditorCamera::aBadBookmarkNameIsRefused() {
+    QUndoStack* stack = m_window->document()->undoStack();
+    answerPrompts(QStringLiteral("   "));
+    QTest::keyClick(viewport(), Qt::Key_B, Qt::ControlModifier);
+    QVERIFY(bookmarks().empty());
+    QCOMPARE(stack->count(), 0);
+    QVERIFY2(m_window->statusBar()->currentMessage().contains(QStringLiteral("needs a name")),
+             qPrintable(m_window->statusBar()->currentMessage()));
+    answerPrompts(std::nullopt);  // cancelled: nothing, said or done
+    QTest::keyClick(viewport(), Qt::Key_B, Qt::ControlModifier);
+    QCOMPARE(stack->count(), 0);
+    answerPrompts(QStringLiteral("ok"));
+    QTest::keyClick(viewport(), Qt::Key_B, Qt::ControlModifier);
+    answerPrompts(QString(201, QLatin1Char('x')));
+    m_window->findChild<QMenu*>(QStringLiteral("renameBookmarkMenu"))->actions()[0]->trigger();
+    QCOMPARE(bookmarks()[0].name, std::string("ok"));
+    QVERIFY(m_window->statusBar()->currentMessage().contains(QStringLiteral("at most 200 bytes")));
+    QCOMPARE(stack->count(), 1);
+    // Ctrl+5 with one bookmark would store in bookmark 2: it is off until there are four.
+    QVERIFY(!m_window->action("storeBookmark5")->isEnabled());
+    QVERIFY(m_window->action("storeBookmark2")->isEnabled());
 }
 
 // The viewport needs GL 3.3 core, set before the application creates any window (as main() does).

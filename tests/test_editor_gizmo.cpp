@@ -3,12 +3,15 @@
 // along x only, by the distance the cursor's pixels mean on that axis, in one undo entry that Ctrl+Z
 // takes back; E shows the rotate gizmo and a ring drag turns the body about the ring's axis; Ctrl
 // snaps to the grid and angle steps of the settings; a multi-selection moves together; during
-// play the live body follows; Escape and a right click cancel; a jointed body carries its anchors.
+// play the live body follows, and several bodies turned during a run turn from their live poses;
+// the Gizmo toolbar's buttons are the keys' actions, its Snap snaps without Ctrl, and the steps
+// typed in Edit → Preferences apply to the next drag; Escape and a right click cancel; a jointed body carries its anchors.
 
 #include "app/document/document_manager.h"
 #include "app/document/scene_document.h"
 #include "app/document/undo_commands.h"
 #include "app/main_window.h"
+#include "app/panels/preferences_dialog.h"
 #include "app/simulation/simulation_controller.h"
 #include "app/viewport/gizmo.h"
 #include "app/viewport/gizmo_tool.h"
@@ -21,6 +24,10 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QDoubleSpinBox>
+#include <QLineEdit>
+#include <QToolBar>
+#include <QToolButton>
 #include <QSettings>
 #include <QSurfaceFormat>
 #include <QTest>
@@ -51,6 +58,7 @@ private slots:
     void multiSelectionMovesTogether();
     void localSpaceFollowsTheBodysAxes();
     void duringPlayTheBodyFollows();
+    void duringARunSeveralTurnFromTheirLivePoses();
     void escapeOrRightClickCancels_data();
     void escapeOrRightClickCancels();
     void movingAJointedBodyCarriesItsAnchors();
@@ -58,6 +66,9 @@ private slots:
     void hoveredHandleLightsUp();
     void deletingTheBodiesMidDragEndsTheDrag();
     void flyKeysStillFlyDuringARightDrag();
+    void toolbarButtonsAreTheKeysActions();
+    void snapButtonSnapsWithoutCtrl();
+    void preferencesStepsApplyToTheNextDrag();
 
 private:
     Viewport* viewport() const { return m_window->viewport(); }
@@ -92,6 +103,15 @@ private:
     void drag(QPoint from, QPoint to, Qt::KeyboardModifiers modifiers = {}, bool release = true, int waitMs = 0);
     // The metres one pixel spans at the gizmo: the tolerance of a drag whose end is a whole pixel.
     float metresPerPixel() const { return placement().metresPerPixel; }
+
+    // The Gizmo toolbar's button for action `name`.
+    QToolButton* gizmoButton(const char* name) const {
+        auto* bar = m_window->findChild<QToolBar*>(QStringLiteral("gizmoToolBar"));
+        return bar ? qobject_cast<QToolButton*>(bar->widgetForAction(m_window->action(QLatin1String(name)))) : nullptr;
+    }
+    // How far, in steps of `step`, a drag of the x arrow towards `metres` along x moves the
+    // sphere (Ctrl held with `modifiers`).
+    float xArrowDragSteps(float metres, float step, Qt::KeyboardModifiers modifiers = {});
 
     std::unique_ptr<MainWindow> m_window;
 };
@@ -368,6 +388,60 @@ void TestEditorGizmo::duringPlayTheBodyFollows() {
     QCOMPARE(document()->undoStack()->count(), 1);
 }
 
+void TestEditorGizmo::duringARunSeveralTurnFromTheirLivePoses() {
+    // Several bodies turned during a run turn from where the run has them, as one body does; they
+    // used to jump to their authored poses. Paused after the fall, so that only the turn moves them.
+    const int sphere = bodyNamed("sphere"), cylinder = bodyNamed("cylinder");
+    select({sphere, cylinder});
+    interplay::SimulationController* simulation = m_window->simulation();
+    const auto live = [&](int body) { return simulation->bodyIds()[std::size_t(body)]; };
+    const glm::vec3 authoredStart = document()->body(cylinder).body.position;
+    simulation->play();
+    QTRY_VERIFY_WITH_TIMEOUT(glm::length(simulation->world()->position(live(cylinder)) - authoredStart) > 0.3f, 10000);
+    simulation->pause();
+    const simcore::World* world = simulation->world();
+    const glm::vec3 liveStart[] = {world->position(live(sphere)), world->position(live(cylinder))};
+    const glm::quat liveTurnStart[] = {world->orientation(live(sphere)), world->orientation(live(cylinder))};
+    const simcore::BodyCreationSettings authored[] = {document()->body(sphere).body, document()->body(cylinder).body};
+
+    QTest::keyClick(viewport(), Qt::Key_E);
+    viewport()->grabViewport();
+    const interplay::gizmo::Placement p = placement();
+    const glm::vec3 arm = grabPoint(Handle::RingY) - p.center;
+    viewport()->setFocus();
+    const QPoint from = pixelOf(p.center + arm);
+    QTest::mousePress(viewport(), Qt::LeftButton, {}, from);
+    QPoint to = from;
+    for (int step = 1; step <= 6; ++step) {
+        to = pixelOf(p.center + glm::angleAxis(glm::radians(10.0f * step), glm::vec3(0.0f, 1.0f, 0.0f)) * arm);
+        QTest::mouseMove(viewport(), to);
+    }
+    QTest::mouseRelease(viewport(), Qt::LeftButton, {}, to);
+
+    QCOMPARE(document()->undoStack()->count(), 1);
+    QCOMPARE(document()->undoStack()->text(0), QStringLiteral("Rotate 2 Bodies"));
+    const int bodies[] = {sphere, cylinder};
+    for (int i = 0; i < 2; ++i) {
+        const simcore::BodyCreationSettings& turned = document()->body(bodies[i]).body;
+        const glm::quat turn = turned.orientation * glm::inverse(authored[i].orientation);
+        QVERIFY2(glm::degrees(glm::angle(turn)) > 40.0f, qPrintable(QString::number(glm::degrees(glm::angle(turn)))));
+        // The live body moved and turned by what the authored one did, from its live pose: the
+        // whole run's fall stays (0.3 m or more), where a jump would have undone it.
+        const glm::vec3 liveMoved = world->position(live(bodies[i])) - liveStart[i];
+        const glm::vec3 authoredMoved = turned.position - authored[i].position;
+        QVERIFY2(glm::length(liveMoved - authoredMoved) < 1e-4f,
+                 qPrintable(QStringLiteral("body %1: live moved %2 m, authored %3 m")
+                                .arg(i)
+                                .arg(glm::length(liveMoved))
+                                .arg(glm::length(authoredMoved))));
+        const glm::quat liveTurn = world->orientation(live(bodies[i])) * glm::inverse(liveTurnStart[i]);
+        QVERIFY2(std::abs(glm::dot(liveTurn, turn)) > 1.0f - 1e-5f, qPrintable(QStringLiteral("body %1").arg(i)));
+    }
+    // Undo turns the live bodies back to where the run had them.
+    document()->undoStack()->undo();
+    for (int i = 0; i < 2; ++i) QVERIFY(glm::length(world->position(live(bodies[i])) - liveStart[i]) < 1e-4f);
+}
+
 void TestEditorGizmo::escapeOrRightClickCancels_data() {
     QTest::addColumn<bool>("rightClick");
     QTest::newRow("Escape") << false;
@@ -510,6 +584,105 @@ void TestEditorGizmo::flyKeysStillFlyDuringARightDrag() {
     // Without the right button, E is the rotate gizmo's key again.
     QTest::keyClick(viewport(), Qt::Key_E);
     QCOMPARE(viewport()->gizmoMode(), std::optional(interplay::gizmo::Mode::Rotate));
+}
+
+float TestEditorGizmo::xArrowDragSteps(float metres, float step, Qt::KeyboardModifiers modifiers) {
+    const int sphere = bodyNamed("sphere");  // at x = -2, a whole number of any step used here
+    select({sphere});
+    const float start = document()->body(sphere).body.position.x;
+    const glm::vec3 grabbed = grabPoint(Handle::AxisX);
+    drag(pixelOf(grabbed), pixelOf(grabbed + glm::vec3(metres, 0.0f, 0.0f)), modifiers);
+    return (document()->body(sphere).body.position.x - start) / step;
+}
+
+void TestEditorGizmo::toolbarButtonsAreTheKeysActions() {
+    QToolButton* move = gizmoButton("gizmoMove");
+    QToolButton* rotate = gizmoButton("gizmoRotate");
+    QToolButton* local = gizmoButton("gizmoLocal");
+    QToolButton* snap = gizmoButton("gizmoSnap");
+    QVERIFY(move && rotate && local && snap);
+    QCOMPARE(move->text(), QStringLiteral("Move"));
+    QVERIFY(move->isChecked() && !rotate->isChecked());
+    // A click on Rotate is E: one group, so Move goes off.
+    QTest::mouseClick(rotate, Qt::LeftButton);
+    QCOMPARE(viewport()->gizmoMode(), std::optional(interplay::gizmo::Mode::Rotate));
+    QVERIFY(rotate->isChecked() && !move->isChecked());
+    // W is a click on Move; pressed again, no gizmo and neither button down.
+    QTest::keyClick(viewport(), Qt::Key_W);
+    QVERIFY(move->isChecked() && !rotate->isChecked());
+    QTest::mouseClick(move, Qt::LeftButton);
+    QCOMPARE(viewport()->gizmoMode(), std::nullopt);
+    QVERIFY(!move->isChecked() && !rotate->isChecked());
+    // Local and Snap are toggles of their own, the buttons and L and Y alike.
+    QTest::mouseClick(local, Qt::LeftButton);
+    QCOMPARE(viewport()->gizmoSpace(), interplay::gizmo::Space::Local);
+    QTest::keyClick(viewport(), Qt::Key_L);
+    QCOMPARE(viewport()->gizmoSpace(), interplay::gizmo::Space::World);
+    QVERIFY(!local->isChecked());
+    QTest::keyClick(viewport(), Qt::Key_Y);
+    QVERIFY(viewport()->gizmoSnapping() && snap->isChecked());
+    QTest::mouseClick(snap, Qt::LeftButton);
+    QVERIFY(!viewport()->gizmoSnapping() && !snap->isChecked());
+    QCOMPARE(document()->undoStack()->count(), 0);  // tools, not edits
+}
+
+void TestEditorGizmo::snapButtonSnapsWithoutCtrl() {
+    // A step of many pixels at this distance (the default view: about 0.03 m a pixel).
+    constexpr float grid = 0.5f;
+    QSettings().setValue(QLatin1String(interplay::kGizmoGridStepKey), grid);
+    QTest::mouseClick(gizmoButton("gizmoSnap"), Qt::LeftButton);
+    select({bodyNamed("sphere")});
+    // 2.5 m asked: 5 steps, 0.25 m (more than two pixels) from either rounding boundary.
+    QVERIFY2(2.0f * metresPerPixel() < 0.25f, qPrintable(QString::number(metresPerPixel())));
+    const float snapped = xArrowDragSteps(2.5f, grid);
+    QVERIFY2(std::abs(snapped - 5.0f) < 1e-3f, qPrintable(QString::number(snapped)));
+    // Ctrl held drags freely now: 2.25 m to within two pixels, which holds no whole step (2 and
+    // 2.5 m are 0.25 m away).
+    document()->undoStack()->undo();
+    viewport()->grabViewport();
+    const float free = xArrowDragSteps(2.25f, grid, Qt::ControlModifier);
+    QVERIFY2(std::abs(free * grid - 2.25f) < 2.0f * metresPerPixel(), qPrintable(QString::number(free * grid)));
+    QVERIFY2(std::abs(free - std::round(free)) > 1e-3f, qPrintable(QString::number(free)));
+}
+
+void TestEditorGizmo::preferencesStepsApplyToTheNextDrag() {
+    QAction* preferences = m_window->action(QStringLiteral("preferences"));
+    QVERIFY(!preferences->shortcut().isEmpty());
+    QTest::keySequence(m_window.get(), preferences->shortcut());
+    auto* dialog = m_window->findChild<interplay::PreferencesDialog*>();
+    QVERIFY(dialog);
+    QVERIFY(QTest::qWaitForWindowExposed(dialog));
+    QCOMPARE(dialog->gridStepField()->value(), interplay::kDefaultGizmoGridStep);
+    QCOMPARE(dialog->angleStepField()->value(), interplay::kDefaultGizmoAngleStep);
+    // Typed and committed with Enter: stored at once.
+    QLineEdit* gridText = dialog->gridStepField()->findChild<QLineEdit*>();
+    dialog->gridStepField()->setFocus();
+    gridText->selectAll();
+    QTest::keyClicks(gridText, QStringLiteral("0.25"));
+    QTest::keyClick(gridText, Qt::Key_Return);
+    QCOMPARE(QSettings().value(QLatin1String(interplay::kGizmoGridStepKey)).toDouble(), 0.25);
+    QLineEdit* angleText = dialog->angleStepField()->findChild<QLineEdit*>();
+    dialog->angleStepField()->setFocus();
+    angleText->selectAll();
+    QTest::keyClicks(angleText, QStringLiteral("10"));
+    QTest::keyClick(angleText, Qt::Key_Enter);  // the keypad's
+    QCOMPARE(QSettings().value(QLatin1String(interplay::kGizmoAngleStepKey)).toDouble(), 10.0);
+    // Out of range is held at the field's bounds, never stored as zero.
+    gridText->selectAll();
+    dialog->gridStepField()->setFocus();
+    QTest::keyClicks(gridText, QStringLiteral("0"));
+    QTest::keyClick(gridText, Qt::Key_Return);
+    QVERIFY(QSettings().value(QLatin1String(interplay::kGizmoGridStepKey)).toDouble() > 0.0);
+    dialog->gridStepField()->setValue(0.25);
+    dialog->close();
+
+    // The next Ctrl-drag snaps to 0.25 m: 0.95 m becomes 1 m.
+    m_window->activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(m_window.get()));
+    viewport()->grabViewport();
+    const float steps = xArrowDragSteps(0.95f, 0.25f, Qt::ControlModifier);
+    QVERIFY2(std::abs(steps - 4.0f) < 1e-3f, qPrintable(QString::number(steps)));
+    QCOMPARE(document()->undoStack()->count(), 1);  // preferences are no edit of the scene
 }
 
 int main(int argc, char** argv) {

@@ -545,6 +545,7 @@ private:
             case BodyField::Position: s.position = {m_random.uniform(-6.0f, 6.0f), m_random.uniform(0.3f, 6.0f), m_random.uniform(-6.0f, 6.0f)}; break;
             case BodyField::Orientation: s.orientation = m_random.rotation(); break;
             case BodyField::Pose:
+            case BodyField::Turn:
                 s.position += m_random.vec(-1.0f, 1.0f);
                 s.orientation = m_random.rotation();
                 break;

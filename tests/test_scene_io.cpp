@@ -1,5 +1,6 @@
 // Scene file v1: exact round trips, the brief's example, warnings for unknown keys, atomic saves,
-// settings overrides, building worlds from scenes, and the default scene.
+// settings overrides, building worlds from scenes, the default scene, and the editor's camera
+// bookmarks (kept, written back, checked).
 
 #include "simcore/io/scene.h"
 #include "simcore/io/scene_io.h"
@@ -449,6 +450,70 @@ private slots:
         QVERIFY(r.diagnostics[0].severity == Diagnostic::Severity::Warning);
         QCOMPARE(r.diagnostics[0].path, std::string("/bodies/0/orientation"));
         QVERIFY(r.scene->bodies[0].body.orientation == Quat(1.0f, 0.0f, 0.0f, 0.0f));
+    }
+
+    // The editor's bookmarks come back bit for bit and in order; a scene without any writes no
+    // "editor" object, so existing files save as they did.
+    void cameraBookmarksRoundTrip() {
+        Scene scene = defaultScene();
+        QVERIFY(serializeScene(scene).find("\"editor\"") == std::string::npos);
+        scene.editor.cameraBookmarks.push_back({"Top view", Vec3(0.1f, -1.0f / 3.0f, 2e6f / 3.0f), -359.5f, 89.0f, 1e-3f, true});
+        scene.editor.cameraBookmarks.push_back({"ünïcode \"quoted\"", Vec3(0.0f), 35.0f, -22.0f, 12.0f, false});
+        const std::string text = serializeScene(scene);
+        const SceneLoadResult loaded = parseScene(text, "bookmarks.json");
+        QVERIFY2(loaded.ok() && loaded.diagnostics.empty(), describe(loaded.diagnostics).c_str());
+        const auto& read = loaded.scene->editor.cameraBookmarks;
+        QCOMPARE(read.size(), std::size_t(2));
+        for (std::size_t i = 0; i < read.size(); ++i) {
+            const CameraBookmark& a = scene.editor.cameraBookmarks[i];
+            QCOMPARE(read[i].name, a.name);
+            QVERIFY(sameBits(read[i].target, a.target));
+            QVERIFY(sameBits(read[i].yawDegrees, a.yawDegrees));
+            QVERIFY(sameBits(read[i].pitchDegrees, a.pitchDegrees));
+            QVERIFY(sameBits(read[i].distance, a.distance));
+            QCOMPARE(read[i].orthographic, a.orthographic);
+        }
+        QCOMPARE(serializeScene(*loaded.scene), text);
+        // What the engine simulates is the same with or without them.
+        QVERIFY(checkScene(scene).empty());
+    }
+
+    void badCameraBookmarksAreErrorsAtTheirPath_data() {
+        // QTest checks each value against its column type: the literals go in as QStrings.
+        const auto row = [](const char* name, const QString& editor, const char* path, const char* message) {
+            QTest::newRow(name) << editor << QString(path) << QString(message);
+        };
+        QTest::addColumn<QString>("editor");
+        QTest::addColumn<QString>("path");
+        QTest::addColumn<QString>("message");
+        const QString good = R"("target": [0, 1, 0], "yaw": 30, "pitch": 20, "distance": 8)";
+        row("not an object", QString(R"([])"), "/editor", "expected an object");
+        row("list not an array", QString(R"({"cameraBookmarks": {}})"), "/editor/cameraBookmarks", "expected an array");
+        row("no name", QString("{\"cameraBookmarks\": [{" + good + "}]}"), "/editor/cameraBookmarks/0/name", "missing");
+        row("empty name", QString("{\"cameraBookmarks\": [{\"name\": \"\", " + good + "}]}"), "/editor/cameraBookmarks/0/name", "a bookmark needs a name");
+        row("long name", QString("{\"cameraBookmarks\": [{\"name\": \"" + QString(201, 'x') + "\", " + good + "}]}"), "/editor/cameraBookmarks/0/name", "at most 200 bytes, got 201");
+        row("pitch past the pole", QString(R"({"cameraBookmarks": [{"name": "a", "target": [0, 1, 0], "yaw": 30, "pitch": 90.5, "distance": 8}]})"), "/editor/cameraBookmarks/0/pitch", "between -90 and 90 degrees, got 90.5");
+        row("zero distance", QString(R"({"cameraBookmarks": [{"name": "a", "target": [0, 1, 0], "yaw": 30, "pitch": 20, "distance": 0}]})"), "/editor/cameraBookmarks/0/distance", "got 0");
+        row("no target", QString(R"({"cameraBookmarks": [{"name": "a", "yaw": 30, "pitch": 20, "distance": 8}]})"), "/editor/cameraBookmarks/0/target", "missing");
+        row("orthographic not a bool", QString("{\"cameraBookmarks\": [{\"name\": \"a\", \"orthographic\": 1, " + good + "}]}"), "/editor/cameraBookmarks/0/orthographic", "expected");
+        QString many = "{\"cameraBookmarks\": [";
+        for (int i = 0; i <= int(kMaxCameraBookmarks); ++i) many += QString(i ? ", " : "") + "{\"name\": \"a\", " + good + "}";
+        row("too many", QString(many + "]}"), "/editor/cameraBookmarks", "at most 100 camera bookmarks, got 101");
+    }
+
+    void badCameraBookmarksAreErrorsAtTheirPath() {
+        QFETCH(QString, editor);
+        QFETCH(QString, path);
+        QFETCH(QString, message);
+        const std::string text = R"({"format": "interplay.scene", "version": 1, "bodies": [], "editor": )" +
+                                 editor.toStdString() + "}";
+        const SceneLoadResult r = parseScene(text, "bad.json");
+        QVERIFY(!r.ok());
+        QVERIFY2(!r.diagnostics.empty(), text.c_str());
+        const Diagnostic& d = r.diagnostics.front();
+        QCOMPARE(d.severity, Diagnostic::Severity::Error);
+        QCOMPARE(QString::fromStdString(d.path), path);
+        QVERIFY2(QString::fromStdString(d.message).contains(message), d.toString().c_str());
     }
 
     void unknownKeysAreWarnings() {

@@ -293,6 +293,11 @@ void SceneDocument::setSettings(const simcore::WorldSettings& settings) {
     emit settingsChanged();
 }
 
+void SceneDocument::setCameraBookmarks(std::vector<simcore::CameraBookmark> bookmarks) {
+    m_scene.editor.cameraBookmarks = std::move(bookmarks);
+    emit cameraBookmarksChanged();
+}
+
 void SceneDocument::replaceScene(simcore::Scene scene, const QString& filePath, bool startModified) {
     m_scene = std::move(scene);
     m_selection.clear();

@@ -36,11 +36,18 @@ enum class BodyField {
     Position,
     Orientation,
     Pose,  // position, orientation and velocities at once (Apply Simulated Pose)
+    Turn,  // position and orientation by one turn of several bodies about their centre (the gizmo)
     LinearVelocity,
     AngularVelocity,
     Color,
     Ccd,
 };
+
+// Whether an edit of `field` moves or turns bodies, so that the joints on them ride along.
+constexpr bool isPlacementField(BodyField field) {
+    return field == BodyField::Position || field == BodyField::Orientation || field == BodyField::Pose ||
+           field == BodyField::Turn;
+}
 
 // What an edit of a joint changed (continuous edits of the same field merge).
 enum class JointField {
@@ -134,6 +141,7 @@ public:
     void setBody(int index, simcore::SceneBody body, BodyField field);
     void setJoint(int index, simcore::SceneJoint joint, JointField field);
     void setSettings(const simcore::WorldSettings& settings);
+    void setCameraBookmarks(std::vector<simcore::CameraBookmark> bookmarks);
 
 signals:
     void modifiedChanged(bool modified);
@@ -148,6 +156,7 @@ signals:
     void bodyMoved(int from, int to);
     void bodyChanged(int index, interplay::BodyField field);
     void settingsChanged();
+    void cameraBookmarksChanged();
     void jointAboutToBeInserted(int index);
     void jointInserted(int index);
     void jointAboutToBeRemoved(int index);

@@ -204,7 +204,7 @@ template class ChangeObjects<simcore::SceneJoint>;
 MoveBodies::MoveBodies(SceneDocument* document, const QString& text, BodyField field, QList<int> indices,
                        std::vector<simcore::SceneBody> after, bool mergeable)
     : QUndoCommand(text), m_field(field), m_indices(indices), m_mergeable(mergeable) {
-    Q_ASSERT(field == BodyField::Position || field == BodyField::Orientation || field == BodyField::Pose);
+    Q_ASSERT(isPlacementField(field));
     // Carried from where the bodies are now: a merged drag carries the joints step by step, as the
     // bodies go.
     std::vector<std::pair<int, simcore::SceneJoint>> carried = jointsCarriedWith(document->scene(), indices, after);
@@ -241,7 +241,7 @@ void MoveBodies::updateObsolete() {
 
 QUndoCommand* changeBodiesCommand(SceneDocument* document, const QString& text, BodyField field, QList<int> indices,
                                   std::vector<simcore::SceneBody> after, bool mergeable) {
-    if (field == BodyField::Position || field == BodyField::Orientation || field == BodyField::Pose)
+    if (isPlacementField(field))
         return new MoveBodies(document, text, field, std::move(indices), std::move(after), mergeable);
     return new ChangeBodies(document, text, field, std::move(indices), std::move(after), mergeable);
 }
@@ -269,6 +269,23 @@ void ChangeSettings::redo() {
 
 void ChangeSettings::undo() {
     m_document->setSettings(m_before);
+}
+
+// ---- ChangeCameraBookmarks ----------------------------------------------------------------------
+
+ChangeCameraBookmarks::ChangeCameraBookmarks(SceneDocument* document, const QString& text,
+                                             std::vector<simcore::CameraBookmark> after)
+    : QUndoCommand(text), m_document(document), m_before(document->scene().editor.cameraBookmarks),
+      m_after(std::move(after)) {
+    setObsolete(m_before == m_after);
+}
+
+void ChangeCameraBookmarks::redo() {
+    m_document->setCameraBookmarks(m_after);
+}
+
+void ChangeCameraBookmarks::undo() {
+    m_document->setCameraBookmarks(m_before);
 }
 
 }  // namespace interplay

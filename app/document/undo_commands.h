@@ -165,7 +165,7 @@ extern template class ChangeObjects<simcore::SceneJoint>;
 
 // Moves or turns bodies (a drag, the Inspector's position and rotation, Apply Simulated Pose) with
 // the joints that ride on them (jointsCarriedWith), as one command: a ChangeBodies of `field`
-// (Position, Orientation or Pose) and a ChangeJoints of their Placement. Merges like ChangeObjects,
+// (isPlacementField) and a ChangeJoints of their Placement. Merges like ChangeObjects,
 // so a drag is one history entry with its joints.
 class MoveBodies : public QUndoCommand {
 public:
@@ -207,6 +207,20 @@ private:
     simcore::WorldSettings m_before;
     simcore::WorldSettings m_after;
     bool m_mergeable;
+};
+
+// Replaces the scene's camera bookmarks (added, renamed, deleted or re-aimed): an edit of the
+// document like any other, though the world never sees it.
+class ChangeCameraBookmarks : public QUndoCommand {
+public:
+    ChangeCameraBookmarks(SceneDocument* document, const QString& text, std::vector<simcore::CameraBookmark> after);
+    void redo() override;
+    void undo() override;
+
+private:
+    SceneDocument* m_document;
+    std::vector<simcore::CameraBookmark> m_before;
+    std::vector<simcore::CameraBookmark> m_after;
 };
 
 }  // namespace interplay

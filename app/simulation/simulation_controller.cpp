@@ -177,6 +177,14 @@ bool SimulationController::changeBody(int index, const simcore::SceneBody& body,
                                b.orientation * glm::inverse(before.body.orientation) * world.orientation(id));
             posed = moved = true;
             break;
+        case BodyField::Turn:
+            // The turn of a group about its centre, carried to the live bodies as the gizmo's
+            // moves are: each shifted by its authored shift and turned by the same rotation, which
+            // for bodies a run has moved together is the same turn about their live centre.
+            world.setTransform(id, world.position(id) + (b.position - before.body.position),
+                               glm::normalize(b.orientation * glm::inverse(before.body.orientation) * world.orientation(id)));
+            posed = moved = true;
+            break;
         case BodyField::Pose:
             world.setTransform(id, b.position, b.orientation);
             world.setLinearVelocity(id, b.linearVelocity);

@@ -15,17 +15,12 @@
 #include <utility>
 
 namespace interplay {
-namespace {
 
-// A step from the settings, or its default where the stored value is missing, not a number or not
-// positive (a zero step would divide by zero when snapping).
-float preferredStep(const char* key, double fallback) {
+double preferredGizmoStep(const char* key, double fallback) {
     bool ok = false;
     const double value = QSettings().value(QLatin1String(key), fallback).toDouble(&ok);
-    return static_cast<float>(ok && std::isfinite(value) && value > 0.0 ? value : fallback);
+    return ok && std::isfinite(value) && value > 0.0 ? value : fallback;
 }
-
-}  // namespace
 
 void GizmoTool::setDocument(SceneDocument* document) {
     if (m_document) disconnect(m_document, nullptr, this, nullptr);
@@ -84,8 +79,8 @@ bool GizmoTool::press(const QPointF& position) {
     m_drag = gizmo::Drag::begin(gizmo::pick(*m_mode, *where, ray), *where, ray);
     if (!m_drag) return false;
     m_highlighted = m_drag->handle();
-    m_snapSteps = {preferredStep(kGizmoGridStepKey, kDefaultGizmoGridStep),
-                   glm::radians(preferredStep(kGizmoAngleStepKey, kDefaultGizmoAngleStep))};
+    m_snapSteps = {static_cast<float>(preferredGizmoStep(kGizmoGridStepKey, kDefaultGizmoGridStep)),
+                   glm::radians(static_cast<float>(preferredGizmoStep(kGizmoAngleStepKey, kDefaultGizmoAngleStep)))};
     m_indices = m_document->selectedBodies();
     m_startBodies.clear();
     for (int index : m_indices) m_startBodies.push_back(m_document->body(index));
@@ -93,7 +88,7 @@ bool GizmoTool::press(const QPointF& position) {
     // moves each of them too.
     m_field = *m_mode == gizmo::Mode::Move ? BodyField::Position
               : m_indices.size() == 1      ? BodyField::Orientation
-                                           : BodyField::Pose;
+                                           : BodyField::Turn;
     m_pushed = false;
     emit repaintNeeded();
     return true;
@@ -102,15 +97,16 @@ bool GizmoTool::press(const QPointF& position) {
 void GizmoTool::drag(const QPointF& position, Qt::KeyboardModifiers modifiers) {
     if (!m_drag) return;
     const auto [origin, direction] = m_viewport.rayThrough(position);
-    // Ctrl snaps, as in Blender and Godot.
-    const gizmo::Snap snap = (modifiers & Qt::ControlModifier) ? m_snapSteps : gizmo::Snap{};
+    // Ctrl snaps, as in Blender and Godot, or drags freely where snapping is on (Blender's).
+    const bool snapping = m_snapping != bool(modifiers & Qt::ControlModifier);
+    const gizmo::Snap snap = snapping ? m_snapSteps : gizmo::Snap{};
     gizmo::Motion motion = m_drag->update({origin, direction}, snap);
     std::vector<simcore::SceneBody> after = m_startBodies;
     if (m_field == BodyField::Position) {
         // The same offset for each, so a run's live bodies follow as the authored ones go.
         for (simcore::SceneBody& body : after) body.body.position += motion.translation;
     } else {
-        if (m_field == BodyField::Pose) {
+        if (m_field == BodyField::Turn) {
             // About the authored centre, as the command sets authored poses (the same point as the
             // gizmo's live centre until a run moves the bodies).
             glm::vec3 center(0.0f);
@@ -119,7 +115,7 @@ void GizmoTool::drag(const QPointF& position, Qt::KeyboardModifiers modifiers) {
         }
         for (simcore::SceneBody& body : after) {
             body.body.orientation = glm::normalize(motion.rotation * body.body.orientation);
-            if (m_field == BodyField::Pose) body.body.position = motion.apply(body.body.position);
+            if (m_field == BodyField::Turn) body.body.position = motion.apply(body.body.position);
         }
     }
     push(std::move(after));

@@ -3,8 +3,9 @@
 // arrow, plane handle or ring moves or turns the whole selection (gizmo.h has the maths) through
 // the same MoveBodies command as a body drag, merged into one history entry per gesture, with the
 // joints riding on the bodies. It works while playing too: a move shifts the live bodies by as much
-// as the authored ones (SimulationController's in-place edits). Ctrl snaps to the grid and angle
-// steps of the settings; a cancel (Escape, right click) puts everything back and leaves no entry.
+// as the authored ones (SimulationController's in-place edits). A drag snaps to the grid and angle
+// steps of the settings while snapping is on or Ctrl is held (Ctrl held with snapping on turns it
+// off, as in Blender); a cancel (Escape, right click) puts everything back and leaves no entry.
 
 #include "app/document/scene_document.h"
 #include "app/viewport/gizmo.h"
@@ -23,11 +24,15 @@ namespace interplay {
 class SimulationController;
 class Viewport;
 
-// QSettings keys of the snapping steps (applied while Ctrl is held), and their defaults.
+// QSettings keys of the snapping steps, and their defaults (read at each press, so a change in
+// the Preferences applies to the next drag).
 inline constexpr char kGizmoGridStepKey[] = "viewport/gizmoGridStep";    // m
 inline constexpr char kGizmoAngleStepKey[] = "viewport/gizmoAngleStep";  // degrees
 inline constexpr double kDefaultGizmoGridStep = 0.1;
 inline constexpr double kDefaultGizmoAngleStep = 15.0;
+// The step stored under `key`, or `fallback` where the stored value is missing, not a number or
+// not positive (a zero step would divide by zero when snapping).
+double preferredGizmoStep(const char* key, double fallback);
 
 class GizmoTool : public QObject {
     Q_OBJECT
@@ -44,6 +49,9 @@ public:
     std::optional<gizmo::Mode> mode() const { return m_mode; }
     void setSpace(gizmo::Space space);
     gizmo::Space space() const { return m_space; }
+    // Snapping without Ctrl (the toolbar's Snap); Ctrl then drags freely.
+    void setSnapping(bool snapping) { m_snapping = snapping; }
+    bool snapping() const { return m_snapping; }
     // Where the gizmo is in the current view: at the selected bodies' live centre, on the world's
     // axes or on those of the active (last selected) body; none when no gizmo is shown or nothing
     // is selected.
@@ -78,6 +86,7 @@ private:
     std::optional<gizmo::Mode> m_mode = gizmo::Mode::Move;
     gizmo::Space m_space = gizmo::Space::World;
     gizmo::Handle m_highlighted = gizmo::Handle::None;
+    bool m_snapping = false;
 
     std::optional<gizmo::Drag> m_drag;
     gizmo::Snap m_snapSteps;                        // the settings' steps, read at the press

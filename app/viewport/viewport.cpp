@@ -130,6 +130,13 @@ void Viewport::lookAlong(AxisView view) {
     update();
 }
 
+void Viewport::setCamera(const Camera& camera) {
+    m_camera = camera;
+    m_framePending = false;
+    emit cameraChanged();
+    update();
+}
+
 void Viewport::setOrthographic(bool orthographic) {
     if (m_camera.isOrthographic() == orthographic) return;
     m_camera.setOrthographic(orthographic);

@@ -46,6 +46,8 @@ public:
 
     Camera& camera() { return m_camera; }
     const Camera& camera() const { return m_camera; }
+    // Shows the view of `camera` (a bookmark's), instead of any framing still pending.
+    void setCamera(const Camera& camera);
     // Aims the camera at the movable bodies (all bodies if none move) on the next frame, when the
     // widget's size is known.
     void frameScene();
@@ -66,6 +68,8 @@ public:
     std::optional<gizmo::Mode> gizmoMode() const { return m_tool.gizmo().mode(); }
     void setGizmoSpace(gizmo::Space space) { m_tool.gizmo().setSpace(space); }
     gizmo::Space gizmoSpace() const { return m_tool.gizmo().space(); }
+    void setGizmoSnapping(bool snapping) { m_tool.gizmo().setSnapping(snapping); }
+    bool gizmoSnapping() const { return m_tool.gizmo().snapping(); }
     // Where the gizmo is drawn now, if it is.
     std::optional<gizmo::Placement> gizmoPlacement() const { return m_tool.gizmo().placement(); }
 

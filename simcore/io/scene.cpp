@@ -5,6 +5,14 @@
 
 namespace simcore {
 
+std::optional<std::string> cameraBookmarkNameProblem(std::string_view name) {
+    if (name.empty()) return "a bookmark needs a name";
+    if (name.size() > kMaxCameraBookmarkName)
+        return "a bookmark's name may have at most " + std::to_string(kMaxCameraBookmarkName) + " bytes, got " +
+               std::to_string(name.size());
+    return std::nullopt;
+}
+
 BuiltWorld buildWorld(const Scene& scene) {
     BuiltWorld built{World(scene.settings), {}, {}};
     built.bodyIds.reserve(scene.bodies.size());

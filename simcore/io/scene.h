@@ -9,6 +9,8 @@
 #include "simcore/world_settings.h"
 
 #include <optional>
+#include <string>
+#include <string_view>
 #include <vector>
 
 namespace simcore {
@@ -28,10 +30,39 @@ struct SceneJoint {
     std::optional<std::size_t> bodyB;  // unset: the joint holds bodyA to the world
 };
 
+// A named view of the editor's orbit camera, kept with the scene so that a reopened file can be
+// seen as its author looked at it. Nothing the engine simulates reads it.
+struct CameraBookmark {
+    std::string name;
+    Vec3 target{0.0f};          // the point the camera orbits and looks at (m)
+    float yawDegrees = 0.0f;    // about world Y; 0 looks along -Z
+    float pitchDegrees = 0.0f;  // how far above the horizon the eye sits
+    float distance = 10.0f;     // from the eye to the target (m)
+    bool orthographic = false;
+
+    bool operator==(const CameraBookmark&) const = default;
+};
+
+// A file holds at most this many bookmarks, each named with 1 to kMaxCameraBookmarkName bytes.
+inline constexpr std::size_t kMaxCameraBookmarks = 100;
+inline constexpr std::size_t kMaxCameraBookmarkName = 200;
+// Why `name` cannot name a bookmark (empty, or too long), or nothing: the loader's and the
+// editor's rule.
+std::optional<std::string> cameraBookmarkNameProblem(std::string_view name);
+
+// What the editor keeps in a scene file besides the scene (the file's optional "editor" object):
+// loaded, kept and saved again by the engine, ignored by the runner.
+struct EditorState {
+    std::vector<CameraBookmark> cameraBookmarks;
+
+    bool operator==(const EditorState&) const = default;
+};
+
 struct Scene {
     WorldSettings settings;
     std::vector<SceneBody> bodies;
     std::vector<SceneJoint> joints;
+    EditorState editor;
 };
 
 // Creates every body, then every joint, of the scene in a new world (ids in scene order).

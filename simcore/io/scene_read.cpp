@@ -33,6 +33,9 @@
 //    body. Hinges and sliders require a non-zero "axis"; limits need lower <= upper; distance
 //    joints require "anchorB" at least 0.1 mm from anchor, and min <= max length once defaulted
 //    (see joint.h). Keys a joint type does not take are warnings, like unknown keys.
+//  - editor (optional): {"cameraBookmarks": [...]}, at most kMaxCameraBookmarks of them, each with
+//    "name" (cameraBookmarkNameProblem), "target", "yaw", "pitch" and "distance" required and
+//    "orthographic" optional (false). Kept and written back; nothing simulated reads it.
 //  - settings.preset: "fast", "balanced" or "accurate" (quality_preset.h), applied before every other
 //    settings key, which then override it. Saving writes it when the settings match a preset.
 
@@ -643,8 +646,53 @@ std::optional<SceneJoint> readJoint(Reader& r, const Json& j, const std::string&
     return out;
 }
 
+// Ranges of a camera bookmark's angles and distance: wider than the editor's camera goes (it keeps
+// yaw within one turn, pitch 1 degree short of the poles, 5 cm to 5 km), which clamps on recall.
+constexpr io_detail::Range kBookmarkYaw{-360.0, 360.0, false, "degrees"};
+constexpr io_detail::Range kBookmarkPitch{-90.0, 90.0, false, "degrees"};
+constexpr io_detail::Range kBookmarkDistance{0.0, 1e6, true, "m"};
+
+std::optional<CameraBookmark> readCameraBookmark(Reader& r, const Json& b, const std::string& path) {
+    if (!r.expectObject(b, path)) return std::nullopt;
+    r.checkKeys(b, path, {"name", "target", "yaw", "pitch", "distance", "orthographic"}, "in a camera bookmark");
+    const int errorsBefore = r.errorCount();
+    CameraBookmark out;
+    if (const Json* name = r.require(b, path, "name")) {
+        const std::string p = childPath(path, "name");
+        if (const auto text = r.readString(*name, p)) {
+            if (const auto problem = cameraBookmarkNameProblem(*text)) r.error(p, *problem);
+            out.name = *text;
+        }
+    }
+    if (const Json* target = r.require(b, path, "target")) {
+        if (const auto v = r.readVec3(*target, childPath(path, "target"), limits::kCoordinate)) out.target = *v;
+    }
+    requiredFloat(r, b, path, "yaw", kBookmarkYaw, out.yawDegrees);
+    requiredFloat(r, b, path, "pitch", kBookmarkPitch, out.pitchDegrees);
+    requiredFloat(r, b, path, "distance", kBookmarkDistance, out.distance);
+    r.optionalBool(b, path, "orthographic", out.orthographic);
+    if (r.errorCount() > errorsBefore) return std::nullopt;
+    return out;
+}
+
+void readEditorState(Reader& r, const Json& editor, const std::string& path, EditorState& out) {
+    if (!r.expectObject(editor, path)) return;
+    r.checkKeys(editor, path, {"cameraBookmarks"}, "in the editor object");
+    const Json* bookmarks = Reader::find(editor, "cameraBookmarks");
+    const std::string p = childPath(path, "cameraBookmarks");
+    if (!bookmarks || !r.expectArray(*bookmarks, p)) return;
+    if (bookmarks->size() > kMaxCameraBookmarks) {
+        r.error(p, "a scene may have at most " + std::to_string(kMaxCameraBookmarks) + " camera bookmarks, got " +
+                       std::to_string(bookmarks->size()));
+        return;
+    }
+    for (std::size_t i = 0; i < bookmarks->size() && !r.full(); ++i) {
+        if (auto bookmark = readCameraBookmark(r, (*bookmarks)[i], childPath(p, i))) out.cameraBookmarks.push_back(std::move(*bookmark));
+    }
+}
+
 std::optional<Scene> readV1(const Json& root, Reader& r, const SceneReadOptions& options) {
-    r.checkKeys(root, "", {"format", "version", "settings", "bodies", "joints"});
+    r.checkKeys(root, "", {"format", "version", "settings", "bodies", "joints", "editor"});
 
     // A wrong or missing format tag means this is not a scene at all, and a newer version may give
     // keys other meanings: reporting its contents key by key would only bury the real problem.
@@ -692,6 +740,8 @@ std::optional<Scene> readV1(const Json& root, Reader& r, const SceneReadOptions&
                 scene.joints.push_back(std::move(*joint));
         }
     }
+
+    if (const Json* editor = Reader::find(root, "editor")) readEditorState(r, *editor, "/editor", scene.editor);
 
     if (r.errorCount() > 0) return std::nullopt;
     return scene;

@@ -248,6 +248,21 @@ std::string serializeScene(const Scene& scene, const std::filesystem::path& scen
     OrderedJson joints = OrderedJson::array();
     for (const SceneJoint& j : scene.joints) joints.push_back(jointJson(j, scene.bodies));
     root["joints"] = std::move(joints);
+    // Only when there is something to keep: a scene without bookmarks saves as it always did.
+    if (!scene.editor.cameraBookmarks.empty()) {
+        OrderedJson bookmarks = OrderedJson::array();
+        for (const CameraBookmark& b : scene.editor.cameraBookmarks) {
+            OrderedJson bookmark = OrderedJson::object();
+            bookmark["name"] = b.name;
+            bookmark["target"] = vec3(b.target);
+            bookmark["yaw"] = number(b.yawDegrees);
+            bookmark["pitch"] = number(b.pitchDegrees);
+            bookmark["distance"] = number(b.distance);
+            bookmark["orthographic"] = b.orthographic;
+            bookmarks.push_back(std::move(bookmark));
+        }
+        root["editor"] = OrderedJson{{"cameraBookmarks", std::move(bookmarks)}};
+    }
     std::string out;
     writeJson(out, root, 0);
     out += '\n';
