@@ -246,23 +246,30 @@ void ProfilerPlot::drawLines(QPainter& painter, const Layout& l) const {
         QPolygonF points;
         int column = INT_MIN;
         std::size_t lowest = 0, highest = 0;
+        double lowValue = 0.0, highValue = 0.0;
         const auto flush = [&] {
             if (column == INT_MIN) return;
-            for (std::size_t i : {std::min(lowest, highest), std::max(lowest, highest)}) {
-                const QPointF p(l.xAt(run[i].time), l.yAt(series.value(run[i])));
+            const bool lowFirst = lowest <= highest;
+            for (const auto& [i, v] : {lowFirst ? std::pair(lowest, lowValue) : std::pair(highest, highValue),
+                                       lowFirst ? std::pair(highest, highValue) : std::pair(lowest, lowValue)}) {
+                const QPointF p(l.xAt(run[i].time), l.yAt(v));
                 if (points.isEmpty() || points.back() != p) points << p;
             }
         };
         for (std::size_t i = 0; i < run.size(); ++i) {
             const int c = static_cast<int>(std::floor(l.xAt(run[i].time)));
+            const double v = series.value(run[i]);
             if (c != column) {
                 flush();
                 column = c;
                 lowest = highest = i;
-            } else {
-                const double v = series.value(run[i]);
-                if (v < series.value(run[lowest])) lowest = i;
-                if (v > series.value(run[highest])) highest = i;
+                lowValue = highValue = v;
+            } else if (v < lowValue) {
+                lowest = i;
+                lowValue = v;
+            } else if (v > highValue) {
+                highest = i;
+                highValue = v;
             }
         }
         flush();
@@ -276,13 +283,17 @@ void ProfilerPlot::drawStacked(QPainter& painter, const Layout& l) const {
     // Per pixel column, the step that took longest: a slow step stays visible in a long run.
     std::vector<std::size_t> shown;
     int column = INT_MIN;
+    double longest = 0.0;  // ms, of shown.back()
     for (std::size_t i = 0; i < run.size(); ++i) {
         const int c = static_cast<int>(std::floor(l.xAt(run[i].time)));
+        const double ms = stageSum(run[i]);
         if (c != column) {
             shown.push_back(i);
             column = c;
-        } else if (stageSum(run[i]) > stageSum(run[shown.back()])) {
+            longest = ms;
+        } else if (ms > longest) {
             shown.back() = i;
+            longest = ms;
         }
     }
     // Bottom stage first: each band lies between the running sums below and above it.
