@@ -736,9 +736,11 @@ private:
         const JointError jointError = world->worstJointError();
         if (!finite({float(world->kineticEnergy()), float(world->potentialEnergy()), jointError.position, jointError.angle}))
             return QStringLiteral("a non-finite energy or joint error in the world");
-        if (sim.history().size() > SimulationController::kHistoryLength) return QStringLiteral("the profiler history overflows");
-        for (const interplay::StepSample& sample : sim.history())
-            if (!finite({float(sample.kineticEnergy), float(sample.potentialEnergy)})) return QStringLiteral("a non-finite profiler sample");
+        const interplay::RunSeries& series = sim.series();
+        if (series.size() > series.capacity()) return QStringLiteral("the run's series overflows");
+        for (std::size_t i = 0; i < series.size(); ++i)
+            if (!finite({float(series[i].kineticEnergy), float(series[i].potentialEnergy), float(series[i].jointError)}))
+                return QStringLiteral("a non-finite sample in the run's series");
         if (const auto line = sim.grabLine(); line && !(finite(line->first) && finite(line->second)))
             return QStringLiteral("a non-finite grab line");
         return {};

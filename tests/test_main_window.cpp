@@ -1228,7 +1228,7 @@ void TestMainWindow::profilerShowsTheLatestStep() {
     m_window->simulation()->stepFrames(5);
     QVERIFY2(profiler->figure("msPerStep").endsWith(" ms"), qPrintable(profiler->figure("msPerStep")));
     QVERIFY(profiler->figure("awakeBodies").contains("of 5 dynamic"));
-    QCOMPARE(m_window->simulation()->history().size(), std::size_t(5));
+    QCOMPARE(m_window->simulation()->series().size(), std::size_t(5));
     // The skipped stages are named as the stage table names them, and are the step's.
     QStringList expected;
     const simcore::StepProfile& profile = m_window->simulation()->world()->lastStepProfile();

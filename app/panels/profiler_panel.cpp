@@ -6,16 +6,32 @@
 #include "simcore/world/world.h"
 
 #include <QFormLayout>
-#include <QLabel>
 #include <QHBoxLayout>
+#include <QLabel>
+#include <QTabBar>
+#include <QVBoxLayout>
 
 namespace interplay {
 
 ProfilerPanel::ProfilerPanel(SimulationController* simulation, QWidget* parent)
-    : QWidget(parent), m_simulation(simulation), m_figures(new QWidget(this)) {
-    // Plot and figures side by side: the dock sits under the viewport, wide and low.
+    : QWidget(parent), m_simulation(simulation), m_plotTabs(new QTabBar(this)),
+      m_plot(new ProfilerPlot(simulation, this)), m_figures(new QWidget(this)) {
+    // Plot and figures side by side: the dock sits under the viewport, wide and low. The tabs'
+    // order is ProfilerPlot::Plot's.
+    m_plotTabs->setObjectName(QStringLiteral("plotTabs"));
+    m_plotTabs->setDocumentMode(true);
+    m_plotTabs->setExpanding(false);
+    for (const QString& name : {tr("Time per stage"), tr("Energy"), tr("Penetration"), tr("Joint error")})
+        m_plotTabs->addTab(name);
+    m_plot->setObjectName(QStringLiteral("profilerPlot"));
+    connect(m_plotTabs, &QTabBar::currentChanged, m_plot,
+            [this](int index) { m_plot->setPlot(static_cast<ProfilerPlot::Plot>(index)); });
+    auto* plotColumn = new QVBoxLayout;
+    plotColumn->setSpacing(2);
+    plotColumn->addWidget(m_plotTabs);
+    plotColumn->addWidget(m_plot, 1);
     auto* layout = new QHBoxLayout(this);
-    layout->addWidget(new ProfilerPlot(simulation, this), 1);
+    layout->addLayout(plotColumn, 1);
     auto* form = new QFormLayout(m_figures);
     form->setContentsMargins(0, 0, 0, 0);
     form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);

@@ -1,15 +1,18 @@
 #pragma once
-// The Profiler dock: per-stage time per step over time (ProfilerPlot), and the latest step's
-// counters and error measures: bodies awake, pairs, contacts, islands, kinetic and potential
+// The Profiler dock: the run's series over time (ProfilerPlot), one plot at a time chosen by tabs
+// (time per stage, energy, penetration, joint error), and the latest step's counters and error
+// measures: bodies awake, pairs, contacts, islands, kinetic and potential
 // energy, the energy's change since the world was built, the deepest penetration, and which
 // stages the step skipped (why, in the tooltip).
 
 #include <QWidget>
 
 class QLabel;
+class QTabBar;
 
 namespace interplay {
 
+class ProfilerPlot;
 class SimulationController;
 
 class ProfilerPanel : public QWidget {
@@ -21,12 +24,16 @@ public:
     // The text of a figure by key ("msPerStep", "awakeBodies", "kineticEnergy", "skippedStages",
     // ...), for tests.
     QString figure(const QString& key) const;
+    ProfilerPlot* plot() const { return m_plot; }
+    QTabBar* plotTabs() const { return m_plotTabs; }
 
 private:
     void refresh();
     QLabel* addFigure(const QString& key, const QString& label);
 
     SimulationController* m_simulation;
+    QTabBar* m_plotTabs;
+    ProfilerPlot* m_plot;
     QWidget* m_figures;
     double m_initialEnergy = 0.0;  // total energy (J) of the world as built
 };

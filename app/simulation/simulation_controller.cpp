@@ -69,7 +69,7 @@ bool SimulationController::build(simcore::Scene scene, QString* error) {
     m_colors.reserve(m_scene.bodies.size());
     for (const simcore::SceneBody& body : m_scene.bodies) m_colors.push_back(body.color);
     m_grab.reset();
-    m_history.clear();
+    m_series.clear();
     m_boundWarned = false;
     m_rebuildBeforeRun = false;
     discardRecording();
@@ -465,13 +465,14 @@ void SimulationController::tick() {
 bool SimulationController::advance(int steps) {
     simcore::World& world = m_built->world;
     prepareRecording();
+    // Resumed from a frame shown, the samples of the steps after it were of the dropped future.
+    m_series.truncateAfterStep(world.stepCount());
     for (int i = 0; i < steps; ++i) {
         const std::optional<AppliedForce> grab = grabForce();  // forces last one step in simcore
         if (grab) applyForce(world, *grab);
         world.step();
         recordStep(grab);
-        m_history.push_back({world.simulatedTime(), world.lastStepProfile(), world.kineticEnergy(), world.potentialEnergy()});
-        if (m_history.size() > kHistoryLength) m_history.pop_front();
+        m_series.record(world);
         if (!m_boundWarned && world.lastStepProfile().counters.boundedVelocities > 0) {
             m_boundWarned = true;
             emit simulationWarning(
@@ -560,7 +561,7 @@ void SimulationController::recordStep(const std::optional<AppliedForce>& input) 
     timer.start();
     m_timeline.record(m_built->world, input, std::exchange(m_changedSinceFrame, false), m_bodyIds.size());
     m_recordingMs.push_back(static_cast<double>(timer.nsecsElapsed()) * 1e-6);
-    if (m_recordingMs.size() > kHistoryLength) m_recordingMs.pop_front();
+    if (m_recordingMs.size() > kRecordingMsSteps) m_recordingMs.pop_front();
 }
 
 void SimulationController::discardRecording() {

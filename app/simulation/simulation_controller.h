@@ -36,6 +36,7 @@
 // Reset and a new scene discard the recording: its frames were of another scene.
 
 #include "app/document/scene_document.h"
+#include "app/simulation/run_series.h"
 #include "app/simulation/timeline.h"
 
 #include "simcore/io/scene.h"
@@ -55,14 +56,6 @@ class QUndoCommand;
 #include <vector>
 
 namespace interplay {
-
-// One step as the profiler panel plots it.
-struct StepSample {
-    double simulatedTime = 0.0;  // s, at the end of the step
-    simcore::StepProfile profile;
-    double kineticEnergy = 0.0;    // J
-    double potentialEnergy = 0.0;  // J, relative to the origin
-};
 
 class SimulationController : public QObject {
     Q_OBJECT
@@ -141,9 +134,9 @@ public:
     // Returns an invalid id, with the reason in *error, if the engine rejects it.
     simcore::BodyId spawn(const simcore::SceneBody& body, QString* error = nullptr);
 
-    // The most recent steps, oldest first, at most kHistoryLength.
-    const std::deque<StepSample>& history() const { return m_history; }
-    static constexpr std::size_t kHistoryLength = 600;
+    // The run's measures, a sample per step (the Profiler's plots): cleared when a new world is
+    // built, and cut after the step a run resumes from, as the timeline is.
+    const RunSeries& series() const { return m_series; }
 
     // ---- The timeline (see the top of this file) ----
     const Timeline& timeline() const { return m_timeline; }
@@ -154,8 +147,9 @@ public:
     int currentFrame() const;
     // Puts the world back at recorded frame `frame`, paused. False when it is not recorded.
     bool showFrame(int frame);
-    // Mean time a step's recording took over the last kHistoryLength recorded steps (ms).
+    // Mean time a step's recording took over the last kRecordingMsSteps recorded steps (ms).
     double recordingMs() const;
+    static constexpr std::size_t kRecordingMsSteps = 600;
 
     // Real-time catch-up limit: after a stall (debugger, slow frame) at most this many steps run
     // per tick and the rest of the backlog is dropped, so the loop never spirals.
@@ -236,7 +230,7 @@ private:
     };
     std::vector<RemovedBody> m_removedBodies;
     std::optional<Grab> m_grab;
-    std::deque<StepSample> m_history;
+    RunSeries m_series;
     bool m_boundWarned = false;  // simulationWarning sent for this world
     Timeline m_timeline;
     bool m_recording = true;
