@@ -212,8 +212,11 @@ void MainWindow::createActions() {
     a = createAction(this, QStringLiteral("save"), tr("&Save"), QKeySequence::Save, tr("Save the scene"));
     a->setIcon(QIcon::fromTheme(QStringLiteral("document-save"), s->standardIcon(QStyle::SP_DialogSaveButton)));
     connect(a, &QAction::triggered, m_files, &DocumentManager::save);
-    a = createAction(this, QStringLiteral("saveAs"), tr("Save &As…"), QKeySequence::SaveAs,
-                     tr("Save the scene to a new file"));
+    // The generic X11 key scheme (XFCE, LXDE and Openbox sessions get it) binds no Save As key.
+    const QKeySequence saveAsKey = QKeySequence(QKeySequence::SaveAs).isEmpty()
+                                       ? QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S)
+                                       : QKeySequence(QKeySequence::SaveAs);
+    a = createAction(this, QStringLiteral("saveAs"), tr("Save &As…"), saveAsKey, tr("Save the scene to a new file"));
     connect(a, &QAction::triggered, m_files, &DocumentManager::saveAs);
     a = createAction(this, QStringLiteral("revert"), tr("Re&vert"), {},
                      tr("Go back to the saved file (asks first; Undo brings the changes back)"));
