@@ -250,8 +250,11 @@ void MainWindow::createActions() {
     a = createAction(this, QStringLiteral("save"), tr("&Save"), QKeySequence::Save, tr("Save the scene"));
     a->setIcon(QIcon::fromTheme(QStringLiteral("document-save"), s->standardIcon(QStyle::SP_DialogSaveButton)));
     connect(a, &QAction::triggered, m_files, &DocumentManager::save);
-    a = createAction(this, QStringLiteral("saveAs"), tr("Save &As…"), QKeySequence::SaveAs,
-                     tr("Save the scene to a new file"));
+    // The generic X11 key scheme (XFCE, LXDE and Openbox sessions get it) binds no Save As key.
+    const QKeySequence saveAsKey = QKeySequence(QKeySequence::SaveAs).isEmpty()
+                                       ? QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S)
+                                       : QKeySequence(QKeySequence::SaveAs);
+    a = createAction(this, QStringLiteral("saveAs"), tr("Save &As…"), saveAsKey, tr("Save the scene to a new file"));
     connect(a, &QAction::triggered, m_files, &DocumentManager::saveAs);
     a = createAction(this, QStringLiteral("revert"), tr("Re&vert"), {},
                      tr("Go back to the saved file (asks first; Undo brings the changes back)"));
@@ -279,12 +282,12 @@ void MainWindow::createActions() {
     m_sceneActions->deleteAction()->setIcon(
         QIcon::fromTheme(QStringLiteral("edit-delete"), s->standardIcon(QStyle::SP_TrashIcon)));
     a = createAction(
-        this, QStringLiteral("applyPose"), tr("Apply Simulated &Pose"), {},
+        this, QStringLiteral("applyPose"), tr("Apply &Simulated Pose"), {},
         tr("Make the bodies' simulated positions, orientations and velocities (of the frame shown) the authored scene"));
     connect(a, &QAction::triggered, this, &MainWindow::applySimulatedPose);
 
     // View.
-    a = createAction(this, QStringLiteral("frameSelection"), tr("&Frame Selection"), Qt::Key_F,
+    a = createAction(this, QStringLiteral("frameSelection"), tr("Frame &Selection"), Qt::Key_F,
                      tr("Aim the camera at the selected bodies (F)"));
     connect(a, &QAction::triggered, m_viewport, &Viewport::frameSelection);
     a = createAction(this, QStringLiteral("frameAll"), tr("Frame &All"), Qt::Key_Home,
@@ -310,7 +313,7 @@ void MainWindow::createActions() {
                          tr("Look at the scene from the %1").arg(tr(view.text).remove(QLatin1Char('&')).toLower()));
         connect(a, &QAction::triggered, m_viewport, [this, axis = view.view] { m_viewport->lookAlong(axis); });
     }
-    a = createAction(this, QStringLiteral("orthographic"), tr("&Orthographic"), Qt::KeypadModifier | Qt::Key_5,
+    a = createAction(this, QStringLiteral("orthographic"), tr("Ort&hographic"), Qt::KeypadModifier | Qt::Key_5,
                      tr("Switch between orthographic and perspective projection (numpad 5)"));
     a->setCheckable(true);
     connect(a, &QAction::toggled, m_viewport, &Viewport::setOrthographic);
@@ -338,7 +341,7 @@ void MainWindow::createActions() {
                                  : rotateGizmo->isChecked() ? std::optional(gizmo::Mode::Rotate)
                                                             : std::nullopt);
     });
-    a = createAction(this, QStringLiteral("gizmoLocal"), tr("&Local Gizmo Axes"), Qt::Key_L,
+    a = createAction(this, QStringLiteral("gizmoLocal"), tr("Lo&cal Gizmo Axes"), Qt::Key_L,
                      tr("Align the gizmo with the active body's axes instead of the world's (L)"));
     a->setCheckable(true);
     a->setIconText(tr("Local"));
@@ -541,7 +544,7 @@ void MainWindow::createMenusAndToolBars() {
     simulation->addAction(action(QStringLiteral("exploreAccuracy")));
     simulation->addSeparator();
     simulation->addAction(action(QStringLiteral("throw")));
-    QMenu* throwShape = simulation->addMenu(tr("Throw &Shape"));
+    QMenu* throwShape = simulation->addMenu(tr("Throw S&hape"));
     throwShape->addActions(m_throwShapes->actions());
 
     m_viewMenu = menuBar()->addMenu(tr("&View"));

@@ -63,7 +63,7 @@ SceneActions::SceneActions(SceneDocument* document, QObject* parent)
         connect(a, &QAction::triggered, this, [this, type = joint.type] { addJoint(type); });
         m_addJoint << a;
     }
-    m_duplicate = createAction(this, QStringLiteral("duplicate"), tr("D&uplicate"), Qt::CTRL | Qt::Key_D,
+    m_duplicate = createAction(this, QStringLiteral("duplicate"), tr("Dup&licate"), Qt::CTRL | Qt::Key_D,
                                tr("Copy the selected bodies beside them"));
     connect(m_duplicate, &QAction::triggered, this, &SceneActions::duplicateSelection);
     m_delete = createAction(this, QStringLiteral("delete"), tr("&Delete"), QKeySequence::Delete,
