@@ -45,7 +45,7 @@ Camera aimedAt(Camera camera, const simcore::CameraBookmark& bookmark) {
 
 CameraBookmarks::CameraBookmarks(SceneDocument* document, Viewport* viewport, QWidget* window)
     : QObject(window), m_document(document), m_viewport(viewport), m_window(window),
-      m_menu(new QMenu(tr("&Bookmarks"), window)), m_renameMenu(new QMenu(tr("&Rename Bookmark"), m_menu)),
+      m_menu(new QMenu(tr("Boo&kmarks"), window)), m_renameMenu(new QMenu(tr("&Rename Bookmark"), m_menu)),
       m_deleteMenu(new QMenu(tr("&Delete Bookmark"), m_menu)) {
     m_namePrompt = [this](const QString& title, const QString& name) -> std::optional<QString> {
         bool ok = false;
