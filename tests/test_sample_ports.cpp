@@ -368,7 +368,7 @@ OrderedJson changedKeys(const OrderedJson& value, const OrderedJson& defaults) {
 std::string portSceneText(const Scene& scene) {
     const OrderedJson full = OrderedJson::parse(serializeScene(scene));
     Scene bare;
-    bare.bodies.push_back({BodyCreationSettings{}, std::nullopt});
+    bare.bodies.push_back({BodyCreationSettings{}, std::nullopt, std::nullopt});
     const OrderedJson defaults = OrderedJson::parse(serializeScene(bare));
     std::ostringstream out;
     out << "{\n  \"format\": " << full["format"].dump() << ",\n  \"version\": " << full["version"].dump()

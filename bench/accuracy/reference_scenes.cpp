@@ -461,7 +461,7 @@ simcore::Scene sceneOf(const World& world) {
         b.restitution = world.restitution(id);
         b.rollingResistance = world.rollingResistance(id);
         b.ccd = world.ccdEnabled(id);
-        scene.bodies.push_back({std::move(b), std::nullopt});
+        scene.bodies.push_back({std::move(b), std::nullopt, std::nullopt});
     }
     auto indexOf = [&bodies](BodyId id) {
         return static_cast<std::size_t>(std::find(bodies.begin(), bodies.end(), id) - bodies.begin());

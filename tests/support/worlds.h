@@ -73,7 +73,7 @@ struct PortedSample {
     std::vector<std::size_t> restitutionZero;  // bodies that land with restitution 0: must not bounce
 
     std::size_t add(BodyCreationSettings body, const Vec3& restsAt) {
-        scene.bodies.push_back({std::move(body), std::nullopt});
+        scene.bodies.push_back({std::move(body), std::nullopt, std::nullopt});
         rest.push_back(restsAt);
         return scene.bodies.size() - 1;
     }
