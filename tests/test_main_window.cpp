@@ -1236,6 +1236,13 @@ void TestMainWindow::profilerShowsTheLatestStep() {
         if (profile.skipped[static_cast<std::size_t>(info.stage)] != simcore::StageSkip::Ran)
             expected << QString::fromLatin1(info.name.data(), static_cast<qsizetype>(info.name.size()));
     QCOMPARE(profiler->figure("skippedStages"), expected.isEmpty() ? QString("none") : expected.join(", "));
+
+    // An edit while paused reaches the running world and the figures, without another step.
+    const QString before = profiler->figure("potentialEnergy");
+    m_window->action("addBox")->trigger();
+    const double potential = m_window->simulation()->world()->potentialEnergy();
+    QTRY_COMPARE(profiler->figure("potentialEnergy"), QString("%1 J").arg(potential, 0, 'f', 3));
+    QVERIFY2(profiler->figure("potentialEnergy") != before, qPrintable(before));
 }
 
 void TestMainWindow::everyDemoSceneRenders_data() {

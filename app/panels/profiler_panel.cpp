@@ -49,6 +49,10 @@ ProfilerPanel::ProfilerPanel(SimulationController* simulation, QWidget* parent)
     addFigure(QStringLiteral("skippedStages"), tr("Stages skipped"))->setWordWrap(true);
 
     connect(simulation, &SimulationController::stepped, this, &ProfilerPanel::refresh);
+    // Edits and timeline frames change the running world between steps: its energies with them.
+    connect(simulation, &SimulationController::bodiesEdited, this, &ProfilerPanel::refresh);
+    connect(simulation, &SimulationController::posesEdited, this, &ProfilerPanel::refresh);
+    connect(simulation, &SimulationController::timelineChanged, this, &ProfilerPanel::refresh);
     connect(simulation, &SimulationController::worldRebuilt, this, [this] {
         const simcore::World* world = m_simulation->world();
         m_initialEnergy = world ? world->kineticEnergy() + world->potentialEnergy() : 0.0;
