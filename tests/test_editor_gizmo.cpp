@@ -101,6 +101,9 @@ private:
     // Presses on `from`, moves in `steps` to each of `path`'s pixels... here: straight to `to` in
     // steps, and releases (unless `release` is false).
     void drag(QPoint from, QPoint to, Qt::KeyboardModifiers modifiers = {}, bool release = true, int waitMs = 0);
+    // Presses on the ring point `center + arm`, moves the cursor round `axis` by `degrees` in
+    // `steps` equal steps along the ring, and releases.
+    void turnRing(const glm::vec3& center, const glm::vec3& arm, const glm::vec3& axis, float degrees, int steps);
     // The metres one pixel spans at the gizmo: the tolerance of a drag whose end is a whole pixel.
     float metresPerPixel() const { return placement().metresPerPixel; }
 
@@ -141,6 +144,19 @@ glm::vec3 TestEditorGizmo::grabPoint(Handle handle) const {
         if (glm::length(point - eye) < glm::length(nearest - eye)) nearest = point;
     }
     return nearest;
+}
+
+void TestEditorGizmo::turnRing(const glm::vec3& center, const glm::vec3& arm, const glm::vec3& axis, float degrees,
+                               int steps) {
+    viewport()->setFocus();
+    const QPoint from = pixelOf(center + arm);
+    QTest::mousePress(viewport(), Qt::LeftButton, {}, from);
+    QPoint to = from;
+    for (int step = 1; step <= steps; ++step) {
+        to = pixelOf(center + glm::angleAxis(glm::radians(degrees * float(step) / float(steps)), axis) * arm);
+        QTest::mouseMove(viewport(), to);
+    }
+    QTest::mouseRelease(viewport(), Qt::LeftButton, {}, to);
 }
 
 void TestEditorGizmo::drag(QPoint from, QPoint to, Qt::KeyboardModifiers modifiers, bool release, int waitMs) {
@@ -223,15 +239,7 @@ void TestEditorGizmo::ringDragTurnsAboutTheRingsAxis() {
     const interplay::gizmo::Placement p = placement();
     // Drag the x ring's near point round by 40° about x, in steps along the ring.
     const glm::vec3 arm = grabPoint(Handle::RingX) - p.center;
-    viewport()->setFocus();
-    const QPoint from = pixelOf(p.center + arm);
-    QTest::mousePress(viewport(), Qt::LeftButton, {}, from);
-    QPoint to = from;
-    for (int step = 1; step <= 8; ++step) {
-        to = pixelOf(p.center + glm::angleAxis(glm::radians(5.0f * step), glm::vec3(1.0f, 0.0f, 0.0f)) * arm);
-        QTest::mouseMove(viewport(), to);
-    }
-    QTest::mouseRelease(viewport(), Qt::LeftButton, {}, to);
+    turnRing(p.center, arm, glm::vec3(1.0f, 0.0f, 0.0f), 40.0f, 8);
 
     const simcore::BodyCreationSettings& turned = document()->body(box).body;
     QCOMPARE(turned.position, start.position);  // one body turns about its own centre
@@ -324,15 +332,7 @@ void TestEditorGizmo::multiSelectionMovesTogether() {
     const glm::vec3 a = document()->body(sphere).body.position, b = document()->body(cylinder).body.position;
     const interplay::gizmo::Placement p = placement();
     const glm::vec3 arm = grabPoint(Handle::RingY) - p.center;
-    viewport()->setFocus();
-    const QPoint from = pixelOf(p.center + arm);
-    QTest::mousePress(viewport(), Qt::LeftButton, {}, from);
-    QPoint to = from;
-    for (int step = 1; step <= 9; ++step) {
-        to = pixelOf(p.center + glm::angleAxis(glm::radians(10.0f * step), glm::vec3(0.0f, 1.0f, 0.0f)) * arm);
-        QTest::mouseMove(viewport(), to);
-    }
-    QTest::mouseRelease(viewport(), Qt::LeftButton, {}, to);
+    turnRing(p.center, arm, glm::vec3(0.0f, 1.0f, 0.0f), 90.0f, 9);
     const glm::vec3 a2 = document()->body(sphere).body.position, b2 = document()->body(cylinder).body.position;
     QVERIFY(glm::length(0.5f * (a2 + b2) - 0.5f * (a + b)) < 1e-4f);  // the centre stays
     QVERIFY(std::abs(glm::length(a2 - b2) - glm::length(a - b)) < 1e-4f);
@@ -408,15 +408,7 @@ void TestEditorGizmo::duringARunSeveralTurnFromTheirLivePoses() {
     viewport()->grabViewport();
     const interplay::gizmo::Placement p = placement();
     const glm::vec3 arm = grabPoint(Handle::RingY) - p.center;
-    viewport()->setFocus();
-    const QPoint from = pixelOf(p.center + arm);
-    QTest::mousePress(viewport(), Qt::LeftButton, {}, from);
-    QPoint to = from;
-    for (int step = 1; step <= 6; ++step) {
-        to = pixelOf(p.center + glm::angleAxis(glm::radians(10.0f * step), glm::vec3(0.0f, 1.0f, 0.0f)) * arm);
-        QTest::mouseMove(viewport(), to);
-    }
-    QTest::mouseRelease(viewport(), Qt::LeftButton, {}, to);
+    turnRing(p.center, arm, glm::vec3(0.0f, 1.0f, 0.0f), 60.0f, 6);
 
     QCOMPARE(document()->undoStack()->count(), 1);
     QCOMPARE(document()->undoStack()->text(0), QStringLiteral("Rotate 2 Bodies"));
