@@ -96,8 +96,10 @@ sweep_values("${WORK}/threads" expected)
 # --sshlogin without an ssh server: this stand-in does what sshd does on the host, running the
 # command line parallel sends (its arguments after the host and "--", joined) through a shell, so
 # parallel's remote path (the quoting for the remote shell, --workdir, the host's job slots) runs.
+# sshd sets SHELL from the account's login shell, and parallel's remote wrapper runs the job
+# through $SHELL: where the test's own environment has none (CI), the job silently did not run.
 set(fake_ssh "${WORK}/fake-ssh")
-file(WRITE "${fake_ssh}" "#!/bin/sh\nshift\n[ \"$1\" = \"--\" ] && shift\nexec sh -c \"$*\"\n")
+file(WRITE "${fake_ssh}" "#!/bin/sh\nshift\n[ \"$1\" = \"--\" ] && shift\nSHELL=/bin/sh exec sh -c \"$*\"\n")
 file(CHMOD "${fake_ssh}" PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE)
 # Slurm runs only where a controller answers (docs/sweep.md says how it was tested); CI has none.
 set(runners parallel sshlogin xargs)
