@@ -504,6 +504,7 @@ void MainWindow::createStatusBar() {
     m_timeLabel = new QLabel(this);
     m_costLabel = new QLabel(this);
     m_bodiesLabel = new QLabel(this);
+    m_bodiesLabel->setObjectName(QStringLiteral("awakeBodiesLabel"));
     m_fpsLabel = new QLabel(this);
     // Fixed digits keep the labels from jittering while running.
     for (QLabel* label : {m_timeLabel, m_costLabel, m_bodiesLabel, m_fpsLabel}) {
@@ -623,13 +624,11 @@ void MainWindow::updateStatus() {
         m_bodiesLabel->setText(tr("no scene"));
         return;
     }
-    const simcore::StepCounters& counters = world->lastStepProfile().counters;
     m_timeLabel->setText(tr("t = %1 s").arg(world->simulatedTime(), 0, 'f', 2));
     m_costLabel->setText(tr("%1 ms/step").arg(world->lastStepProfile().totalMs, 0, 'f', 3));
-    const auto total = static_cast<int>(world->bodyCount());
-    // Before the first step the engine has not counted yet: everything starts awake.
-    const int awake = world->stepCount() == 0 ? total : static_cast<int>(counters.awakeBodies);
-    m_bodiesLabel->setText(tr("%1 / %2 awake").arg(awake).arg(total));
+    const SimulationController::AwakeCount bodies = m_simulation->awakeCount();
+    m_bodiesLabel->setText(tr("%1 / %2 awake").arg(bodies.awake).arg(bodies.dynamic));
+    m_bodiesLabel->setToolTip(tr("Dynamic bodies awake, of all dynamic bodies"));
 }
 
 void MainWindow::showSimulationError(const QString& message) {

@@ -193,11 +193,7 @@ void TestEditorClipboard::boxDragSelectsTheBodiesInside() {
         if (with.pixel(p) != without.pixel(p)) ++changed;
     }
     QVERIFY2(changed > 0, "the rubber band is drawn along the box's top edge");
-    if (qEnvironmentVariableIsSet("INTERPLAY_CLIPBOARD_SCREENSHOT") && !orthographic) {
-        // What the screen shows, once the window has repainted the view with the band.
-        QTest::qWait(200);
-        m_window->screen()->grabWindow(m_window->winId()).save(qEnvironmentVariable("INTERPLAY_CLIPBOARD_SCREENSHOT"));
-    }
+    if (!orthographic) test_support::saveScreenshotIfAsked(*m_window, "INTERPLAY_BOX_SELECT_SCREENSHOT");
     QVERIFY(document()->selectedBodies().isEmpty());  // selected on release, not before
     QTest::mouseRelease(viewport(), Qt::LeftButton, {}, box.bottomRight());
     QCOMPARE(document()->selectedBodies(), (QList<int>{1, 2, 3}));
@@ -314,6 +310,7 @@ void TestEditorClipboard::copyPasteAddsBodiesWithTheirJoints() {
     // The running world holds them too.
     QCOMPARE(m_window->simulation()->bodyIds().size(), std::size_t(kBodies + 3));
     QCOMPARE(m_window->simulation()->jointIds().size(), std::size_t(6));
+    test_support::saveScreenshotIfAsked(*m_window, "INTERPLAY_PASTE_SCREENSHOT");
 
     press(Qt::Key_Z, Qt::ControlModifier);
     QCOMPARE(sceneText(*document()), before);

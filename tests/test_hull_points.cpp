@@ -171,6 +171,7 @@ void TestHullPoints::dialogEditsTheHullAsOneUndoEntry() {
     QVERIFY2(dialog->findChild<QLabel*>("hullStatus")->text().contains("a hull of"),
              qPrintable(dialog->findChild<QLabel*>("hullStatus")->text()));
     QCOMPARE(document->body(body).body.shape.hull->sourcePoints(), before);  // nothing until OK
+    test_support::saveScreenshotIfAsked(*m_window, "INTERPLAY_HULL_POINTS_SCREENSHOT");
 
     QTest::mouseClick(ok, Qt::LeftButton);
     QTRY_VERIFY(!m_window->inspector()->findChild<interplay::HullPointsDialog*>());

@@ -189,6 +189,7 @@ private slots:
     void overlaysAndSleepingTintAreDrawn();
     void qmlPanelLoadsAndChangesTheWorld();
     void profilerShowsTheLatestStep();
+    void statusBarAndProfilerCountTheSameBodies();
     void everyDemoSceneRenders_data();
     void everyDemoSceneRenders();
 
@@ -1243,6 +1244,29 @@ void TestMainWindow::profilerShowsTheLatestStep() {
     const double potential = m_window->simulation()->world()->potentialEnergy();
     QTRY_COMPARE(profiler->figure("potentialEnergy"), QString("%1 J").arg(potential, 0, 'f', 3));
     QVERIFY2(profiler->figure("potentialEnergy") != before, qPrintable(before));
+}
+
+void TestMainWindow::statusBarAndProfilerCountTheSameBodies() {
+    // The default scene: a static ground and five dynamic bodies. Both places count the dynamic
+    // ones, awake of all, before the first step and after.
+    interplay::ProfilerPanel* profiler = m_window->profiler();
+    auto* status = m_window->statusBar()->findChild<QLabel*>("awakeBodiesLabel");
+    QVERIFY(status);
+    m_window->action("reset")->trigger();
+    QCOMPARE(m_window->simulation()->world()->stepCount(), std::uint64_t(0));
+    QCOMPARE(status->text(), QString("5 / 5 awake"));
+    QCOMPARE(profiler->figure("awakeBodies"), QString("5 of 5 dynamic"));
+    // A body added before the first step is part of the scene the run starts from: no energy change.
+    m_window->action("addBox")->trigger();
+    QTRY_COMPARE(status->text(), QString("6 / 6 awake"));
+    QCOMPARE(profiler->figure("awakeBodies"), QString("6 of 6 dynamic"));
+    QCOMPARE(profiler->figure("energyChange"), QString("0.000 J"));
+    // Asleep is counted in both: a world stepped until it rests.
+    m_window->simulation()->stepFrames(600);
+    const interplay::SimulationController::AwakeCount count = m_window->simulation()->awakeCount();
+    QVERIFY2(count.awake < count.dynamic, "something in the default scene falls asleep in 10 s");
+    QTRY_COMPARE(status->text(), QString("%1 / 6 awake").arg(count.awake));
+    QCOMPARE(profiler->figure("awakeBodies"), QString("%1 of 6 dynamic").arg(count.awake));
 }
 
 void TestMainWindow::everyDemoSceneRenders_data() {

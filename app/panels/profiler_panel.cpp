@@ -53,11 +53,7 @@ ProfilerPanel::ProfilerPanel(SimulationController* simulation, QWidget* parent)
     connect(simulation, &SimulationController::bodiesEdited, this, &ProfilerPanel::refresh);
     connect(simulation, &SimulationController::posesEdited, this, &ProfilerPanel::refresh);
     connect(simulation, &SimulationController::timelineChanged, this, &ProfilerPanel::refresh);
-    connect(simulation, &SimulationController::worldRebuilt, this, [this] {
-        const simcore::World* world = m_simulation->world();
-        m_initialEnergy = world ? world->kineticEnergy() + world->potentialEnergy() : 0.0;
-        refresh();
-    });
+    connect(simulation, &SimulationController::worldRebuilt, this, &ProfilerPanel::refresh);
     refresh();
 }
 
@@ -83,8 +79,11 @@ void ProfilerPanel::refresh() {
     const simcore::StepProfile& profile = world->lastStepProfile();
     const simcore::StepCounters& c = profile.counters;
     const double kinetic = world->kineticEnergy(), potential = world->potentialEnergy();
+    // Edits before the first step build the scene the run starts from: the change counts from it.
+    if (world->stepCount() == 0) m_initialEnergy = kinetic + potential;
     set("msPerStep", world->stepCount() == 0 ? tr("–") : tr("%1 ms").arg(profile.totalMs, 0, 'f', 3));
-    set("awakeBodies", tr("%1 of %2 dynamic").arg(c.awakeBodies).arg(c.dynamicBodies));
+    const SimulationController::AwakeCount bodies = m_simulation->awakeCount();
+    set("awakeBodies", tr("%1 of %2 dynamic").arg(bodies.awake).arg(bodies.dynamic));
     set("contacts", tr("%1 / %2 / %3").arg(c.pairs).arg(c.manifolds).arg(c.contactPoints));
     set("islands", QString::number(c.islands));
     set("kineticEnergy", tr("%1 J").arg(kinetic, 0, 'f', 3));

@@ -35,7 +35,7 @@ private:
     QTabBar* m_plotTabs;
     ProfilerPlot* m_plot;
     QWidget* m_figures;
-    double m_initialEnergy = 0.0;  // total energy (J) of the world as built
+    double m_initialEnergy = 0.0;  // total energy (J) of the world before its first step
 };
 
 }  // namespace interplay

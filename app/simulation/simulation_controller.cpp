@@ -37,6 +37,18 @@ const simcore::World* SimulationController::world() const {
     return m_built ? &m_built->world : nullptr;
 }
 
+SimulationController::AwakeCount SimulationController::awakeCount() const {
+    AwakeCount count;
+    if (!m_built) return count;
+    const simcore::World& world = m_built->world;
+    for (const simcore::BodyId id : m_bodyIds) {
+        if (world.motionType(id) != simcore::MotionType::Dynamic) continue;
+        ++count.dynamic;
+        if (world.isAwake(id)) ++count.awake;
+    }
+    return count;
+}
+
 int SimulationController::sceneIndexOf(simcore::BodyId id) const {
     const std::size_t authored = std::min(m_scene.bodies.size(), m_bodyIds.size());
     for (std::size_t i = 0; i < authored; ++i) {

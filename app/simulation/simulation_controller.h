@@ -85,6 +85,13 @@ public:
     const simcore::Scene& authoredScene() const { return m_scene; }
     // The scene body a world body was made from, or -1 (thrown in, or not in this world).
     int sceneIndexOf(simcore::BodyId id) const;
+    // The running world's dynamic bodies, and how many of them are awake (a new world's all are):
+    // what the status bar and the Profiler show. Static bodies never sleep, so they are not counted.
+    struct AwakeCount {
+        int awake = 0;
+        int dynamic = 0;
+    };
+    AwakeCount awakeCount() const;
 
     bool isPlaying() const { return m_timer.isActive(); }
     // Simulated seconds per real second during playback (slow motion below 1).

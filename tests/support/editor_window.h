@@ -5,6 +5,7 @@
 #include "app/document/scene_document.h"
 #include "app/main_window.h"
 
+#include <QScreen>
 #include <QTest>
 #include <QUndoStack>
 
@@ -27,6 +28,17 @@ inline void closeWithoutPrompt(std::unique_ptr<interplay::MainWindow>& window) {
         window->close();
     }
     window.reset();
+}
+
+// Where the environment variable `variable` names a PNG file, saves what the screen shows over the
+// window there, dialogs in front of it included: how the README's screenshots are made.
+inline void saveScreenshotIfAsked(const QWidget& window, const char* variable) {
+    const QString path = qEnvironmentVariable(variable);
+    if (path.isEmpty()) return;
+    QTest::qWait(200);  // the window repaints what the last event changed
+    const QRect frame = window.frameGeometry();
+    QVERIFY2(window.screen()->grabWindow(0, frame.x(), frame.y(), frame.width(), frame.height()).save(path),
+             qPrintable(path));
 }
 
 }  // namespace test_support
