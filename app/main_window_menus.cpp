@@ -6,6 +6,7 @@
 
 #include <QActionGroup>
 #include <QDockWidget>
+#include <QLabel>
 #include <QMenuBar>
 #include <QToolBar>
 #include <QToolButton>
@@ -113,6 +114,10 @@ void MainWindow::createMenusAndToolBars() {
     QToolBar* addBar = addToolBar(tr("Add"));
     addBar->setObjectName(QStringLiteral("addToolBar"));
     addBar->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    // One word per button (the actions' icon texts) keeps every toolbar on one row at 1400 px.
+    auto* addLabel = new QLabel(tr("Add:"));
+    addLabel->setContentsMargins(6, 0, 2, 0);
+    addBar->addWidget(addLabel);
     for (ShapeType type : addOrder) addBar->addAction(m_sceneActions->addBodyAction(type));
     auto* jointButton = new QToolButton;
     jointButton->setText(tr("Joint"));

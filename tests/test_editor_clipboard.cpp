@@ -10,6 +10,7 @@
 #include "app/document/scene_clipboard.h"
 #include "app/document/scene_document.h"
 #include "app/document/scene_tree_model.h"
+#include "app/panels/inspector_panel.h"
 #include "app/main_window.h"
 #include "app/simulation/simulation_controller.h"
 #include "app/viewport/viewport.h"
@@ -27,6 +28,7 @@
 #include <QItemSelectionModel>
 #include <QMimeData>
 #include <QScreen>
+#include <QLabel>
 #include <QStatusBar>
 #include <QTest>
 #include <QTreeView>
@@ -261,6 +263,12 @@ void TestEditorClipboard::selectAllNoneAndInvert() {
     press(Qt::Key_A, Qt::ControlModifier | Qt::ShiftModifier);
     QVERIFY(document()->selectedBodies().isEmpty());
     QVERIFY(m_window->sceneTree()->selectionModel()->selectedRows().isEmpty());
+    // The Inspector says so in full: its wrapped header is as tall as its lines need.
+    auto* header = m_window->inspector()->findChild<QLabel*>(QStringLiteral("inspectorHeader"));
+    QVERIFY(header);
+    QTRY_VERIFY(header->text().startsWith(QStringLiteral("Nothing selected")));
+    QTRY_VERIFY2(header->height() >= header->heightForWidth(header->width()),
+                 qPrintable(QString("%1 px tall, %2 needed").arg(header->height()).arg(header->heightForWidth(header->width()))));
     document()->setSelectedBodies({1, 3});
     press(Qt::Key_I, Qt::ControlModifier);
     QCOMPARE(document()->selectedBodies(), (QList<int>{0, 2, 4}));

@@ -59,10 +59,12 @@ private slots:
     void cleanup();
 
     void tabsChooseThePlotAndHoverReadsTheSeries();
+    void theChosenPlotComesBackInTheNextWindow();
 
 private:
     interplay::SimulationController* simulation() const { return m_window->simulation(); }
     ProfilerPlot* plot() const { return m_window->profiler()->plot(); }
+    void openWindow();  // ragdoll.json, the Profiler dock raised and tall
     QTabBar* tabs() const { return m_window->profiler()->plotTabs(); }
     void clickTab(ProfilerPlot::Plot which);
     void play(std::uint64_t steps);
@@ -82,6 +84,10 @@ void TestEditorPlots::cleanupTestCase() {
 
 void TestEditorPlots::init() {
     test_support::clearSettings();
+    openWindow();
+}
+
+void TestEditorPlots::openWindow() {
     m_window = std::make_unique<MainWindow>();
     QVERIFY(m_window->documentManager()->openFile(QStringLiteral(INTERPLAY_SOURCE_DIR "/scenes/ragdoll.json")));
     QVERIFY(test_support::showActive(*m_window));
@@ -134,6 +140,14 @@ void TestEditorPlots::tabsChooseThePlotAndHoverReadsTheSeries() {
     QVERIFY(!plot()->hoveredSample());
 
     if (const QString scene = qEnvironmentVariable("INTERPLAY_PLOTS_COST"); !scene.isEmpty()) measureCostPerStep(scene);
+}
+
+void TestEditorPlots::theChosenPlotComesBackInTheNextWindow() {
+    clickTab(ProfilerPlot::Plot::Penetration);
+    test_support::closeWithoutPrompt(m_window);
+    openWindow();  // the settings kept
+    QCOMPARE(tabs()->currentIndex(), int(ProfilerPlot::Plot::Penetration));
+    QCOMPARE(plot()->plot(), ProfilerPlot::Plot::Penetration);
 }
 
 void TestEditorPlots::checkHover(ProfilerPlot::Plot which, const QStringList& names) {

@@ -45,6 +45,7 @@
 #include <QQuickItem>
 #include <QQuickWidget>
 #include <QStatusBar>
+#include <QToolBar>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -190,6 +191,7 @@ private slots:
     void qmlPanelLoadsAndChangesTheWorld();
     void profilerShowsTheLatestStep();
     void statusBarAndProfilerCountTheSameBodies();
+    void everyToolbarButtonShowsAt1400Pixels();
     void everyDemoSceneRenders_data();
     void everyDemoSceneRenders();
 
@@ -1267,6 +1269,19 @@ void TestMainWindow::statusBarAndProfilerCountTheSameBodies() {
     QVERIFY2(count.awake < count.dynamic, "something in the default scene falls asleep in 10 s");
     QTRY_COMPARE(status->text(), QString("%1 / 6 awake").arg(count.awake));
     QCOMPARE(profiler->figure("awakeBodies"), QString("%1 of 6 dynamic").arg(count.awake));
+}
+
+void TestMainWindow::everyToolbarButtonShowsAt1400Pixels() {
+    // The window at its tests' 1400 px: no toolbar hides a button behind its overflow arrow.
+    QStringList hidden;
+    for (QToolBar* bar : m_window->findChildren<QToolBar*>()) {
+        for (QAction* action : bar->actions()) {
+            if (action->isSeparator()) continue;
+            const QWidget* button = bar->widgetForAction(action);
+            if (!button || !button->isVisible()) hidden << bar->windowTitle() + ": " + action->iconText();
+        }
+    }
+    QVERIFY2(hidden.isEmpty(), qPrintable(hidden.join(", ")));
 }
 
 void TestMainWindow::everyDemoSceneRenders_data() {

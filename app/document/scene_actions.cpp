@@ -53,6 +53,7 @@ SceneActions::SceneActions(SceneDocument* document, QObject* parent)
         QAction* a =
             createAction(this, QLatin1String(kAddBodyNames[type]), tr("Add %1").arg(shapeDisplayName(shape)), {},
                          tr("Add a %1 above the point the camera looks at").arg(shapeDisplayName(shape).toLower()));
+        a->setIconText(shapeDisplayName(shape));  // on a toolbar, after its "Add:" label
         connect(a, &QAction::triggered, this, [this, shape] { addBody(shape); });
         m_addBody << a;
     }

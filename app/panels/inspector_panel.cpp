@@ -170,6 +170,7 @@ InspectorPanel::InspectorPanel(SceneDocument* document, QWidget* parent)
     bold.setBold(true);
     m_header->setFont(bold);
     m_header->setWordWrap(true);
+    m_header->setObjectName(QStringLiteral("inspectorHeader"));
     m_message->setWordWrap(true);
     m_message->setObjectName(QStringLiteral("inspectorMessage"));
     m_message->setStyleSheet(QStringLiteral("color: #b3261e;"));

@@ -8,10 +8,17 @@
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QSettings>
 #include <QTabBar>
 #include <QVBoxLayout>
 
+#include <algorithm>
+
 namespace interplay {
+
+namespace {
+const QString kPlotKey = QStringLiteral("profiler/plot");  // the tab shown: ProfilerPlot::Plot
+}
 
 ProfilerPanel::ProfilerPanel(SimulationController* simulation, QWidget* parent)
     : QWidget(parent), m_simulation(simulation), m_plotTabs(new QTabBar(this)),
@@ -24,8 +31,13 @@ ProfilerPanel::ProfilerPanel(SimulationController* simulation, QWidget* parent)
     for (const QString& name : {tr("Time per stage"), tr("Energy"), tr("Penetration"), tr("Joint error")})
         m_plotTabs->addTab(name);
     m_plot->setObjectName(QStringLiteral("profilerPlot"));
-    connect(m_plotTabs, &QTabBar::currentChanged, m_plot,
-            [this](int index) { m_plot->setPlot(static_cast<ProfilerPlot::Plot>(index)); });
+    // The plot last looked at comes back in the next session, as dock layouts do.
+    m_plotTabs->setCurrentIndex(std::clamp(QSettings().value(kPlotKey).toInt(), 0, m_plotTabs->count() - 1));
+    m_plot->setPlot(static_cast<ProfilerPlot::Plot>(m_plotTabs->currentIndex()));
+    connect(m_plotTabs, &QTabBar::currentChanged, m_plot, [this](int index) {
+        m_plot->setPlot(static_cast<ProfilerPlot::Plot>(index));
+        QSettings().setValue(kPlotKey, index);
+    });
     auto* plotColumn = new QVBoxLayout;
     plotColumn->setSpacing(2);
     plotColumn->addWidget(m_plotTabs);
