@@ -181,7 +181,7 @@ void TestEditorImport::hostileFileChangesNothing() {
     QVERIFY(drop(INTERPLAY_SOURCE_DIR "/tests/data/meshes/hostile/truncated.glb"));
     QTRY_VERIFY(dialog() && dialog()->isVisible());
     const QString message = dialog()->findChild<QLabel*>("importPreview")->text();
-    QVERIFY2(message.contains("truncated.glb: cannot be read as glb"), qPrintable(message));
+    QVERIFY2(message.contains("truncated.glb: is a binary glTF whose header says 628 bytes, but it has 100"), qPrintable(message));
     QVERIFY(!dialog()->findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Ok)->isEnabled());
     QTest::mouseClick(dialog()->findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Cancel), Qt::LeftButton);
     QTRY_VERIFY(!dialog());

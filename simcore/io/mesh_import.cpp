@@ -12,6 +12,9 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
 
 namespace simcore {
 
@@ -133,6 +136,42 @@ void configure(Assimp::Importer& importer) {
     }
 }
 
+// A binary glTF states its own length and each chunk's: assimp 5.2 believes them and allocates
+// what they say (a 100-byte file whose JSON chunk claimed 4 GB ran the fuzzer out of memory), so
+// they are checked against the bytes there are first. Empty when the data is no binary glTF or
+// its lengths fit; else what is wrong.
+std::string binaryGltfProblem(const void* data, std::size_t size) {
+    const auto* bytes = static_cast<const unsigned char*>(data);
+    if (size < 4 || std::memcmp(bytes, "glTF", 4) != 0) return {};
+    const auto word = [bytes](std::size_t at) {  // little-endian, as the format stores it
+        return std::uint32_t(bytes[at]) | std::uint32_t(bytes[at + 1]) << 8 | std::uint32_t(bytes[at + 2]) << 16 |
+               std::uint32_t(bytes[at + 3]) << 24;
+    };
+    const std::size_t headerBytes = size >= 8 && word(4) == 1 ? 20 : 12;  // glTF 1.0's header is longer
+    if (size < headerBytes)
+        return "is a binary glTF cut off in its " + std::to_string(headerBytes) + "-byte header";
+    const std::uint32_t length = word(8);
+    if (length > size || length < headerBytes)
+        return "is a binary glTF whose header says " + std::to_string(length) + " bytes, but it has " +
+               std::to_string(size);
+    if (headerBytes == 20) {
+        const std::uint32_t content = word(12);
+        if (content > length - headerBytes)
+            return "is a binary glTF whose scene is said to be " + std::to_string(content) + " bytes, but " +
+                   std::to_string(length - headerBytes) + " follow the header";
+        return {};
+    }
+    for (std::size_t at = headerBytes; at < length;) {
+        if (length - at < 8) return "is a binary glTF with a chunk header cut off at byte " + std::to_string(at);
+        const std::uint32_t chunk = word(at);
+        if (chunk > length - at - 8)
+            return "is a binary glTF whose chunk at byte " + std::to_string(at) + " says " + std::to_string(chunk) +
+                   " bytes, but " + std::to_string(length - at - 8) + " follow";
+        at += 8 + std::size_t(chunk);
+    }
+    return {};
+}
+
 }  // namespace
 
 ImportedMesh importMeshFromMemory(const void* data, std::size_t size, std::string_view format, std::string_view name,
@@ -155,6 +194,10 @@ ImportedMesh importMeshFromMemory(const void* data, std::size_t size, std::strin
     if (size > options.maxFileBytes) {
         out.error = prefix + "is " + std::to_string(size) + " bytes; at most " + std::to_string(options.maxFileBytes) +
                     " are read";
+        return out;
+    }
+    if (std::string problem = binaryGltfProblem(data, size); !problem.empty()) {
+        out.error = prefix + problem;
         return out;
     }
     Assimp::Importer importer;
@@ -203,6 +246,19 @@ ImportedMesh importMesh(const std::filesystem::path& file, const MeshImportOptio
         out.error = name + ": is " + std::to_string(bytes) + " bytes; at most " + std::to_string(options.maxFileBytes) +
                     " are read";
         return out;
+    }
+    if (std::ifstream in(file, std::ios::binary); in) {  // a GLB's lengths, checked as in memory
+        char magic[4] = {};
+        if (in.read(magic, 4) && std::memcmp(magic, "glTF", 4) == 0) {
+            std::string whole(static_cast<std::size_t>(bytes), '\0');
+            in.seekg(0);
+            in.read(whole.data(), static_cast<std::streamsize>(whole.size()));
+            if (std::string problem = binaryGltfProblem(whole.data(), static_cast<std::size_t>(in.gcount()));
+                !problem.empty()) {
+                out.error = name + ": " + problem;
+                return out;
+            }
+        }
     }
     // Through assimp's file system, so a .gltf can name buffers beside it.
     Assimp::Importer importer;
