@@ -505,6 +505,7 @@ void MainWindow::createStatusBar() {
     m_costLabel = new QLabel(this);
     m_bodiesLabel = new QLabel(this);
     m_bodiesLabel->setObjectName(QStringLiteral("awakeBodiesLabel"));
+    m_bodiesLabel->setToolTip(tr("Dynamic bodies awake, of all dynamic bodies"));
     m_fpsLabel = new QLabel(this);
     // Fixed digits keep the labels from jittering while running.
     for (QLabel* label : {m_timeLabel, m_costLabel, m_bodiesLabel, m_fpsLabel}) {
@@ -628,7 +629,6 @@ void MainWindow::updateStatus() {
     m_costLabel->setText(tr("%1 ms/step").arg(world->lastStepProfile().totalMs, 0, 'f', 3));
     const SimulationController::AwakeCount bodies = m_simulation->awakeCount();
     m_bodiesLabel->setText(tr("%1 / %2 awake").arg(bodies.awake).arg(bodies.dynamic));
-    m_bodiesLabel->setToolTip(tr("Dynamic bodies awake, of all dynamic bodies"));
 }
 
 void MainWindow::showSimulationError(const QString& message) {

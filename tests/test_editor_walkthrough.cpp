@@ -293,9 +293,7 @@ void TestEditorWalkthrough::pointCursorAt(QPoint pixel) {
 void TestEditorWalkthrough::screenshot(int n, const char* what) {
     const QString folder = qEnvironmentVariable("INTERPLAY_WALKTHROUGH_SCREENSHOTS");
     if (folder.isEmpty()) return;
-    QTest::qWait(100);  // the window repaints what the last event changed
-    const QString path = QDir(folder).filePath(QStringLiteral("walkthrough-%1-%2.png").arg(n).arg(what));
-    QVERIFY(m_window->screen()->grabWindow(m_window->winId()).save(path));
+    test_support::saveScreenshot(*m_window, QDir(folder).filePath(QStringLiteral("walkthrough-%1-%2.png").arg(n).arg(what)));
 }
 
 void TestEditorWalkthrough::buildPlayApplySaveReopen() {

@@ -30,15 +30,18 @@ inline void closeWithoutPrompt(std::unique_ptr<interplay::MainWindow>& window) {
     window.reset();
 }
 
-// Where the environment variable `variable` names a PNG file, saves what the screen shows over the
-// window there, dialogs in front of it included: how the README's screenshots are made.
-inline void saveScreenshotIfAsked(const QWidget& window, const char* variable) {
-    const QString path = qEnvironmentVariable(variable);
-    if (path.isEmpty()) return;
+// Saves what the screen shows over the window as the PNG file `path`, dialogs in front of it
+// included: how the README's screenshots are made.
+inline void saveScreenshot(const QWidget& window, const QString& path) {
     QTest::qWait(200);  // the window repaints what the last event changed
     const QRect frame = window.frameGeometry();
     QVERIFY2(window.screen()->grabWindow(0, frame.x(), frame.y(), frame.width(), frame.height()).save(path),
              qPrintable(path));
+}
+
+// saveScreenshot where the environment variable `variable` names the file.
+inline void saveScreenshotIfAsked(const QWidget& window, const char* variable) {
+    if (const QString path = qEnvironmentVariable(variable); !path.isEmpty()) saveScreenshot(window, path);
 }
 
 }  // namespace test_support
