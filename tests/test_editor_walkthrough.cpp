@@ -76,8 +76,6 @@ constexpr float kLift = 1.0f;
 // Steps played (1.33 s at the default 60 a second); the frame scrubbed back to, two thirds of the
 // way, is 0.3 s or more after Box 1 has landed.
 constexpr int kPlayedSteps = 80;
-// A sideways slide a user sees at a glance (m): a tenth of the box's 0.5 m half depth.
-constexpr float kVisibleSlide = 0.05f;
 
 // The texts of the undo stack's entries, oldest first.
 QStringList history(const QUndoStack& stack) {
@@ -104,13 +102,10 @@ void checkPlausible(const std::map<int, Pose>& frame, const simcore::Shape& shap
                  qPrintable(QStringLiteral("body %1: lowest point at y = %2 m").arg(body).arg(bounds.min.y)));
         QVERIFY(std::isfinite(pose.position.x) && std::isfinite(pose.position.z));
     }
-    // A flat landing has no sideways force: Box 1 should stay where it was lifted. The engine slides
-    // it 1.9 cm at 5.8 m/s (measured 2026-12, an open problem): expected to fail at the slop, and
-    // held under a bound at which a slide is plainly visible.
+    // A flat landing has no sideways force: Box 1 stays where it was lifted, within the slop (it
+    // slid 1.9 cm while a manifold's normal rows were solved once each per pass).
     const glm::vec3 landed = frame.at(box1).position;
     const float aside = std::hypot(landed.x - lifted.x, landed.z - lifted.z);
-    QVERIFY2(aside < kVisibleSlide, qPrintable(QStringLiteral("Box 1 landed %1 m aside").arg(aside)));
-    QEXPECT_FAIL("", "a box landing flat slides about 2 cm (an open problem of the contact solver)", Continue);
     QVERIFY2(aside < slop, qPrintable(QStringLiteral("Box 1 landed %1 m aside").arg(aside)));
     const float distance = glm::length(frame.at(box3).position - frame.at(box2).position);
     QVERIFY2(std::abs(distance - jointedDistance) < slop,

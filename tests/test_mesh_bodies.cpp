@@ -224,10 +224,11 @@ private slots:
                 world.step();
                 farthest = std::max(farthest, world.position(id).x);
             }
-            qInfo("wall: start %.1f, farthest centre x %.4f, final v_x %.1f", start, farthest,
+            qInfo("wall: start %.1f, farthest centre x %.4f, final v_x %g", start, farthest,
                   world.linearVelocity(id).x);
             QVERIFY(farthest < 20.0f - 0.05f + 0.01f);  // at most the slop into the wall
-            QVERIFY(world.linearVelocity(id).x <= 0.0f);  // it hit and stopped (or bounced)
+            // It hit and stopped (or bounced): what is left of 300 m/s is float rounding at most.
+            QVERIFY(world.linearVelocity(id).x < 300.0f * 1e-6f);
         }
     }
 
