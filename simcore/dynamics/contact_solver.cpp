@@ -23,7 +23,6 @@ Vec3 relativeVelocityAt(const Vec3& point, const BodyStorage& bodies, std::size_
 // first tangent follows the slip: with axes at an angle to it, the clamped friction pointed off the
 // slip direction and came out weak (3.6 % on a box sliding down a 30-degree incline, with the rows
 // solved one after the other). Without slip any continuous basis serves.
-
 void frictionAxes(const Vec3& n, const Vec3& centre, const BodyStorage& bodies, std::size_t a, std::size_t b, Vec3& t1,
                   Vec3& t2) {
     const Vec3 relative = relativeVelocityAt(centre, bodies, a, b);
@@ -359,6 +358,7 @@ bool ContactSolver::solve(BodyStorage& bodies, bool useBias) {
     // and toppled (1.19 m in 10 s; 4 mm without).
     const bool relaxes = params_.solver.positionCorrection == PositionCorrection::SoftStep && params_.solver.positionIterations > 0;
     const bool frictionInPass = useBias != relaxes;
+    const bool impactFrictionPass = useBias && !frictionInPass;  // for the manifolds that impact
 
     const FloatW settleTolerance = FloatW::splat(kRelaxTolerance), sweepTolerance = FloatW::splat(kSweepTolerance);
     const FloatW deepOverlap = FloatW::splat(-params_.contact.linearSlop);
@@ -400,7 +400,7 @@ bool ContactSolver::solve(BodyStorage& bodies, bool useBias) {
                 bias = select(speculative, arrive, simd::max(correction.baumgarte * overlap, correction.maxPush));
             }
             normalRows[i] = {cross(anchorA, normal), cross(anchorB, normal), bias, massScale, impulseScale, p.normalImpulse,
-                        separation < deepOverlap};
+                             separation < deepOverlap};
         }
 
         // One point alone is solved exactly in one sweep; more are swept while they still move each other.
@@ -430,7 +430,7 @@ bool ContactSolver::solve(BodyStorage& bodies, bool useBias) {
             largestExcess = simd::max(largestExcess, select(normalRows[i].deep, excess, FloatW::splat(-1.0f)));
         }
 
-        const bool impactFriction = !frictionInPass && useBias && c.anyImpact;
+        const bool impactFriction = impactFrictionPass && c.anyImpact;
         if ((c.anyFriction || c.anyRolling) && (frictionInPass || impactFriction)) {
             FloatW normalSum = zero, twistReach = zero;
             for (int i = 0; i < c.maxPointCount; ++i) {
