@@ -174,7 +174,8 @@ SIMCORE_SIMD_INLINE void solveRolling(WideBodies& v, const SymMat3W& rollingMass
 // A manifold's friction rows, as prepared, and the bodies' inverse masses.
 struct FrictionRowsW {
     Vec3W normal, tangent1, tangent2, centerA, centerB;
-    FloatW tangentMass11, tangentMass22, tangentMass12, twistMass;
+    FloatW tangentMass11, tangentMass22, tangentMass12;  // the 2x2 tangent block's inverse
+    FloatW twistMass31, twistMass32, twistMass33;        // the 3x3 block inverse's twist row
     FloatW inverseMassA, inverseMassB;
     SymMat3W inverseInertiaA, inverseInertiaB;
 };
@@ -187,17 +188,23 @@ SIMCORE_SIMD_INLINE void applyFriction(WideBodies& v, const FrictionRowsW& f, Fl
                  f.inverseInertiaA, f.inverseInertiaB);
 }
 
-// Twist about the normal, then the two-row block at the friction centre, each accumulated impulse
-// clamped to its Coulomb bound (the block's into the disc of radius linearLimit).
+// The twist about the normal as the three rows together would have it, clamped to twistLimit; then
+// the two-row block at the friction centre, clamped into the disc of radius linearLimit. Unclamped,
+// the two solves are the 3x3 block's solution.
 SIMCORE_SIMD_INLINE void solveFriction(WideBodies& v, const FrictionRowsW& f, FloatW& impulse1, FloatW& impulse2,
                                        FloatW& twist, FloatW linearLimit, FloatW twistLimit) {
+    const Vec3W angularA1 = cross(f.centerA, f.tangent1), angularB1 = cross(f.centerB, f.tangent1);
+    const Vec3W angularA2 = cross(f.centerA, f.tangent2), angularB2 = cross(f.centerB, f.tangent2);
+    FloatW slip1 = alongAxis(v, f.tangent1, angularA1, angularB1);
+    FloatW slip2 = alongAxis(v, f.tangent2, angularA2, angularB2);
     const FloatW twistSpeed = dot(v.angularB - v.angularA, f.normal);
-    const FloatW newTwist = simd::min(simd::max(twist - f.twistMass * twistSpeed, -twistLimit), twistLimit);
+    const FloatW twistChange = f.twistMass31 * slip1 + f.twistMass32 * slip2 + f.twistMass33 * twistSpeed;
+    const FloatW newTwist = simd::min(simd::max(twist - twistChange, -twistLimit), twistLimit);
     applyFriction(v, f, FloatW::zero(), FloatW::zero(), newTwist - twist);
     twist = newTwist;
 
-    const FloatW slip1 = alongAxis(v, f.tangent1, cross(f.centerA, f.tangent1), cross(f.centerB, f.tangent1));
-    const FloatW slip2 = alongAxis(v, f.tangent2, cross(f.centerA, f.tangent2), cross(f.centerB, f.tangent2));
+    slip1 = alongAxis(v, f.tangent1, angularA1, angularB1);
+    slip2 = alongAxis(v, f.tangent2, angularA2, angularB2);
     FloatW t1 = impulse1 - mulAdd(f.tangentMass11, slip1, f.tangentMass12 * slip2);
     FloatW t2 = impulse2 - mulAdd(f.tangentMass12, slip1, f.tangentMass22 * slip2);
     clampToDisc(t1, t2, linearLimit);
@@ -211,8 +218,8 @@ template <class Batch>
 SIMCORE_SIMD_INLINE FrictionRowsW frictionRows(const Batch& c) {
     return {load(c.normal),         load(c.tangent1),       load(c.tangent2),       load(c.centerA),
             load(c.centerB),        c.tangentMass[0],       c.tangentMass[1],       c.tangentMass[2],
-            c.twistMass,            c.inverseMassA,         c.inverseMassB,         load(c.inverseInertiaA),
-            load(c.inverseInertiaB)};
+            c.twistMass[0],         c.twistMass[1],         c.twistMass[2],         c.inverseMassA,
+            c.inverseMassB,         load(c.inverseInertiaA), load(c.inverseInertiaB)};
 }
 
 // 1 / (J M^-1 J^T) of a row along `axis` at the two anchors; zero where neither body can move.

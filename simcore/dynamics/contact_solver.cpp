@@ -275,14 +275,24 @@ void ContactSolver::computeEffectiveMasses(ManifoldBatch& c) {
     const FloatW k11 = inverseMassSum + dot(a1, ia1) + dot(b1, ib1);
     const FloatW k22 = inverseMassSum + dot(a2, inverseInertiaA * a2) + dot(b2, inverseInertiaB * b2);
     const FloatW k12 = dot(a2, ia1) + dot(b2, ib1);
-    const FloatW determinant = k11 * k22 - k12 * k12;
-    const MaskW invertible = hasFriction & (determinant > zero);
-    const FloatW inverseDeterminant = one / simd::max(determinant, tiny);
-    c.tangentMass[0] = select(invertible, k22 * inverseDeterminant, zero);
-    c.tangentMass[1] = select(invertible, k11 * inverseDeterminant, zero);
-    c.tangentMass[2] = select(invertible, -(k12 * inverseDeterminant), zero);
-    const FloatW kTwist = dot(normal, inverseInertiaA * normal) + dot(normal, inverseInertiaB * normal);
-    c.twistMass = select(hasFriction & (kTwist > zero), one / simd::max(kTwist, tiny), zero);
+    const Vec3W ian = inverseInertiaA * normal, ibn = inverseInertiaB * normal;
+    const FloatW k13 = dot(a1, ian) + dot(b1, ibn), k23 = dot(a2, ian) + dot(b2, ibn);
+    const FloatW k33 = dot(normal, ian) + dot(normal, ibn);
+    // From cofactors; where the 3x3 block is degenerate (nothing turns about the normal), the
+    // twist row alone.
+    const FloatW c11 = k22 * k33 - k23 * k23, c33 = k11 * k22 - k12 * k12;
+    const FloatW c13 = k12 * k23 - k13 * k22, c23 = k12 * k13 - k11 * k23;
+    const FloatW determinant = k11 * c11 + k12 * (k13 * k23 - k12 * k33) + k13 * c13;
+    const MaskW tangents = hasFriction & (c33 > zero);
+    const MaskW block = tangents & (determinant > FloatW::splat(1e-5f) * c33 * k33);
+    const FloatW inverseC33 = one / simd::max(c33, tiny), inverseDeterminant = one / simd::max(determinant, tiny);
+    c.tangentMass[0] = select(tangents, k22 * inverseC33, zero);
+    c.tangentMass[1] = select(tangents, k11 * inverseC33, zero);
+    c.tangentMass[2] = select(tangents, -(k12 * inverseC33), zero);
+    c.twistMass[0] = select(block, c13 * inverseDeterminant, zero);
+    c.twistMass[1] = select(block, c23 * inverseDeterminant, zero);
+    c.twistMass[2] = select(block, c33 * inverseDeterminant,
+                            select(hasFriction & (k33 > zero), one / simd::max(k33, tiny), zero));
 }
 
 void ContactSolver::loadVelocities(const BodyStorage& bodies) {

@@ -129,10 +129,16 @@ private:
         // a twist row about the normal bounded by friction times each point's impulse times its
         // lever arm. Per-point friction rows, solved one after another, let the order of the
         // corners turn a resting box and couple the side faces of neighbours in a pyramid.
+        // At a centre off the bodies' centres of mass (a bar resting on two crossing bars) a tangent
+        // impulse also turns the bodies about the normal: the twist impulse is found from the
+        // three rows together (the third row of the 3x3 block's inverse), then the tangent block
+        // from the twist it left. Twist solved alone left that turn for the next pass, and a
+        // Jenga tower of 30 layers swayed 3.3 cm as it screwed round.
         FloatW centerA[3], centerB[3];               // the friction centre from each centre of mass
-        FloatW tangentMass[3];                       // inverse of the 2x2 block: 11, 22, 12
+        FloatW tangentMass[3];                       // inverse of the 2x2 tangent block: 11, 22, 12
+        FloatW twistMass[3];                         // third row of the 3x3 block's inverse: 31, 32, 33
         FloatW tangentImpulse1, tangentImpulse2;     // N s
-        FloatW twistMass, twistImpulse;              // 1 / (n . (IA^-1 + IB^-1) n); N m s
+        FloatW twistImpulse;                         // N m s
         // Rolling resistance (as in Box3D): a three-row block on the relative angular velocity
         // wB - wA with the mass matrix (IA^-1 + IB^-1)^-1, its accumulated angular impulse clamped
         // to the ball of radius rollingLever times the summed normal impulse. Zero where the pair
