@@ -246,6 +246,8 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const BodyStor
     }
 
     velocities_.assign(references_.size() + batches_.size(), BodyRow{});
+    changedInPass_.assign(references_.size(), 0);
+    relaxPass_ = 1;  // no body counts as changed before the first relax pass
     motion_.assign(references_.size(), BodyRow{});
     motion_[0].value[7] = 1.0f;  // the immovable body's rotation: identity
 }
@@ -346,6 +348,29 @@ void ContactSolver::warmStart(BodyStorage& bodies) {
 bool ContactSolver::solve(BodyStorage& bodies, bool useBias) {
     loadVelocities(bodies);
     loadMotion(bodies);
+    const bool pushLeft = solvePass(useBias, false);
+    storeVelocities(bodies);
+    return pushLeft;
+}
+
+bool ContactSolver::relaxWherePushing(BodyStorage& bodies) {
+    loadVelocities(bodies);
+    loadMotion(bodies);
+    const bool pushLeft = solvePass(false, true);
+    storeVelocities(bodies);
+    return pushLeft;
+}
+
+bool ContactSolver::touchesChange(const ManifoldBatch& c) const {
+    for (int lane = 0; lane < kLanes; ++lane) {
+        if (changedInPass_[static_cast<std::size_t>(c.bodyA[lane])] + 1 >= relaxPass_) return true;
+        if (changedInPass_[static_cast<std::size_t>(c.bodyB[lane])] + 1 >= relaxPass_) return true;
+    }
+    return false;
+}
+
+bool ContactSolver::solvePass(bool useBias, bool restricted) {
+    if (!useBias) ++relaxPass_;
     Correction correction;
     if (!useBias)
         correction.mode = Correction::Mode::None;
@@ -376,7 +401,7 @@ bool ContactSolver::solve(BodyStorage& bodies, bool useBias) {
     const float* motion = motion_.data()->value;
     // Whether any batch still pushes; each batch's largest excess starts afresh (the maximum over
     // all of them is above zero exactly when one batch's is).
-    const bool pushLeft = forEachBatch([&](ManifoldBatch& c) {
+    const auto solveBatch = [&](ManifoldBatch& c) {
         FloatW largestExcess = FloatW::splat(-1.0f);
         WideBodies v = gatherVelocities(rows, c.bodyA, c.bodyB);
         const WideBodies before = v;
@@ -476,9 +501,21 @@ bool ContactSolver::solve(BodyStorage& bodies, bool useBias) {
             for (FloatW& rolling : c.rollingImpulse) rolling = select(kept, rolling, zero);
         }
         scatterVelocities(rows, c.storeA, c.storeB, v);
-        return simd::any(largestExcess > zero);
-    });
-    storeVelocities(bodies);
+        if (useBias) return simd::any(largestExcess > zero);
+        bool pushes = false;
+        for (int lane = 0; lane < kLanes; ++lane) {
+            if (largestExcess.lane(lane) <= 0.0f) continue;
+            pushes = true;
+            if (c.storeA[lane] == c.bodyA[lane]) changedInPass_[static_cast<std::size_t>(c.bodyA[lane])] = relaxPass_;
+            if (c.storeB[lane] == c.bodyB[lane]) changedInPass_[static_cast<std::size_t>(c.bodyB[lane])] = relaxPass_;
+        }
+        return pushes;
+    };
+    if (!restricted) return forEachBatch(solveBatch);
+    // Few batches still push: one after another (colour by colour, as batches_ is ordered).
+    bool pushLeft = false;
+    for (ManifoldBatch& c : batches_)
+        if (touchesChange(c) && solveBatch(c)) pushLeft = true;
     return pushLeft;
 }
 

@@ -272,7 +272,10 @@ void World::relaxConstraints(const StepPlan& plan) {
         if (plan.solveJoints) jointSolver_.solve(bodies_, false);
         if (plan.relaxContacts) pushLeft = contactSolver_.solve(bodies_, false);
     }
-    for (int i = 0; pushLeft && i < ContactSolver::kMaxExtraRelaxPasses; ++i) pushLeft = contactSolver_.solve(bodies_, false);
+    for (int i = 0; pushLeft && i < ContactSolver::kMaxExtraRelaxPasses; ++i) {
+        if (plan.solveJoints) jointSolver_.solve(bodies_, false);
+        pushLeft = contactSolver_.relaxWherePushing(bodies_);
+    }
 }
 
 void World::storeImpulses(const StepPlan& plan, StepCounters& counters) {
