@@ -353,10 +353,11 @@ bool ContactSolver::solve(BodyStorage& bodies, bool useBias) {
     return pushLeft;
 }
 
-bool ContactSolver::relaxWherePushing(BodyStorage& bodies) {
+bool ContactSolver::relaxWherePushing(BodyStorage& bodies, int passes) {
     loadVelocities(bodies);
     loadMotion(bodies);
-    const bool pushLeft = solvePass(false, true);
+    bool pushLeft = true;
+    for (int i = 0; pushLeft && i < passes; ++i) pushLeft = solvePass(false, true);
     storeVelocities(bodies);
     return pushLeft;
 }

@@ -60,11 +60,12 @@ public:
     // Returns whether some normal row still changed a relative velocity by more than
     // kRelaxTolerance: in a relax pass, push velocity is still being taken out.
     bool solve(BodyStorage& bodies, bool useBias);
-    // A relax pass after the configured ones (World runs up to kMaxExtraRelaxPasses while the last
-    // one still took push velocity out) over only the manifolds with a body whose velocity a row
-    // changed by more than kRelaxTolerance in the pass before or in this one so far. Returns
-    // whether push velocity is still being taken out.
-    bool relaxWherePushing(BodyStorage& bodies);
+    // Up to `passes` relax passes after the configured ones, while the last still took push
+    // velocity out, each over only the manifolds with a body whose velocity a row changed by more
+    // than kRelaxTolerance in the pass before or in this one so far (World runs kMaxExtraRelaxPasses
+    // in all; one at a time between joint passes). Returns whether push velocity was still being
+    // taken out.
+    bool relaxWherePushing(BodyStorage& bodies, int passes);
     // m/s. Deep overlaps in a stack leave push velocity that one pass cannot remove: ten cubes
     // overlapping by a quarter threw the top one at 6.5 m/s. Where a heavy body presses a light one
     // into the ground, Gauss-Seidel passes each take out only about the mass ratio's share: Jolt's

@@ -272,9 +272,14 @@ void World::relaxConstraints(const StepPlan& plan) {
         if (plan.solveJoints) jointSolver_.solve(bodies_, false);
         if (plan.relaxContacts) pushLeft = contactSolver_.solve(bodies_, false);
     }
+    if (!pushLeft) return;
+    if (!plan.solveJoints) {
+        contactSolver_.relaxWherePushing(bodies_, ContactSolver::kMaxExtraRelaxPasses);
+        return;
+    }
     for (int i = 0; pushLeft && i < ContactSolver::kMaxExtraRelaxPasses; ++i) {
-        if (plan.solveJoints) jointSolver_.solve(bodies_, false);
-        pushLeft = contactSolver_.relaxWherePushing(bodies_);
+        jointSolver_.solve(bodies_, false);  // or contact-only passes tear a chain's joints
+        pushLeft = contactSolver_.relaxWherePushing(bodies_, 1);
     }
 }
 
