@@ -95,10 +95,10 @@ std::vector<Port> ports() {
     auto noRebound = [](const char* knownFailure = nullptr) { return Check{Kind::NoRebound, kReboundSpeed, knownFailure}; };
     return {
         {box3dHighMassRatio1, T,
-         {sideways("HighMassRatio1: a pyramid's cube 0.22 m sideways at 10 s under the heavy top cubes "
+         {sideways("HighMassRatio1: a pyramid's cube 0.63 m sideways at 10 s under the heavy top cubes "
                    "(Box3D 0.41 m), bound 2 cm; issue 12"),
-          height(20.0f, "HighMassRatio1: a cube under the 300:1 ones ends 5.4 cm off its rest at 10 s, the soft "
-                        "contacts' compression under 300 times a cube's weight (Box3D 0.20 m), bound 5 cm; issue 12")}},
+          height(20.0f, "HighMassRatio1: the 300:1 top cube ends 5.7 cm off its rest at 10 s, the soft "
+                        "contacts' compression of the cubes under it (Box3D 0.20 m), bound 5 cm; issue 12")}},
         {[] { return box2dHighMassRatio(2); }, T,
          {sideways("HighMassRatio2: the 400:1 box lands and pushes a support 4.3 cm sideways by 10 s (Box3D 0.53 m), "
                    "bound 2 cm; issue 12"),

@@ -96,6 +96,7 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const BodyStor
     std::array<std::uint32_t, kColorCount + 1> perColor{};
     order_.clear();
     colorOf_.clear();
+    unevenBody_.clear();
     for (std::size_t ci = 0; ci < contacts.size(); ++ci) {
         const Contact& contact = contacts[ci];
         if (contact.manifold.pointCount == 0) continue;
@@ -105,6 +106,10 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const BodyStor
         const bool movesB = bodies.motion[b] == MotionType::Dynamic && bodies.awake[b];
         if (!movesA && !movesB) continue;
         const std::int32_t sa = solverBody(a, bodies), sb = solverBody(b, bodies);
+        if (movesA && movesB && unevenMasses(bodies.inverseMass[a], bodies.inverseMass[b])) {
+            unevenBody_.resize(references_.size(), 0);
+            unevenBody_[static_cast<std::size_t>(sa)] = unevenBody_[static_cast<std::size_t>(sb)] = 1;
+        }
         const std::uint64_t used = (movesA ? bodyColors_[sa] : 0) | (movesB ? bodyColors_[sb] : 0);
         int color = kOverflow;
         if (used != ~std::uint64_t{0}) {
@@ -247,6 +252,7 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const BodyStor
 
     velocities_.assign(references_.size() + batches_.size(), BodyRow{});
     changedInPass_.assign(references_.size(), 0);
+    unevenBody_.resize(references_.size(), 0);
     relaxPass_ = 1;  // no body counts as changed before the first relax pass
     motion_.assign(references_.size(), BodyRow{});
     motion_[0].value[7] = 1.0f;  // the immovable body's rotation: identity
@@ -372,6 +378,8 @@ bool ContactSolver::touchesChange(const ManifoldBatch& c) const {
 
 bool ContactSolver::solvePass(bool useBias, bool restricted) {
     if (!useBias) ++relaxPass_;
+    extraRelaxPasses_ = restricted ? extraRelaxPasses_ + 1 : 0;
+    const bool unevenOnly = extraRelaxPasses_ > kEvenExtraRelaxPasses;
     Correction correction;
     if (!useBias)
         correction.mode = Correction::Mode::None;
@@ -506,6 +514,9 @@ bool ContactSolver::solvePass(bool useBias, bool restricted) {
         bool pushes = false;
         for (int lane = 0; lane < kLanes; ++lane) {
             if (largestExcess.lane(lane) <= 0.0f) continue;
+            if (unevenOnly && !unevenBody_[static_cast<std::size_t>(c.bodyA[lane])] &&
+                !unevenBody_[static_cast<std::size_t>(c.bodyB[lane])])
+                continue;
             pushes = true;
             if (c.storeA[lane] == c.bodyA[lane]) changedInPass_[static_cast<std::size_t>(c.bodyA[lane])] = relaxPass_;
             if (c.storeB[lane] == c.bodyB[lane]) changedInPass_[static_cast<std::size_t>(c.bodyB[lane])] = relaxPass_;
