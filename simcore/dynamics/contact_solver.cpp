@@ -106,7 +106,9 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const BodyStor
         const bool movesB = bodies.motion[b] == MotionType::Dynamic && bodies.awake[b];
         if (!movesA && !movesB) continue;
         const std::int32_t sa = solverBody(a, bodies), sb = solverBody(b, bodies);
-        if (movesA && movesB && unevenMasses(bodies.inverseMass[a], bodies.inverseMass[b])) {
+        const float inverseMassA = bodies.inverseMass[a], inverseMassB = bodies.inverseMass[b];
+        if (movesA && movesB &&
+            std::max(inverseMassA, inverseMassB) > kUnevenMassRatio * std::min(inverseMassA, inverseMassB)) {
             unevenBody_.resize(references_.size(), 0);
             unevenBody_[static_cast<std::size_t>(sa)] = unevenBody_[static_cast<std::size_t>(sb)] = 1;
         }

@@ -36,7 +36,6 @@
 #include "simcore/parallel/task_pool.h"
 #include "simcore/world_settings.h"
 
-#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -217,9 +216,6 @@ private:
     int extraRelaxPasses_ = 0;  // restricted passes since the last full relax pass
     // By solver body: 1 where it touches a moving body of uneven mass (kUnevenMassRatio).
     std::vector<std::uint8_t> unevenBody_;
-    static bool unevenMasses(float inverseMassA, float inverseMassB) {
-        return std::max(inverseMassA, inverseMassB) > kUnevenMassRatio * std::min(inverseMassA, inverseMassB);
-    }
     Params params_;
     SoftConstraint soft_;  // overlap correction of the position-correcting passes
     float maxPenetration_ = 0.0f;

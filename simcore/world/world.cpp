@@ -272,14 +272,12 @@ void World::relaxConstraints(const StepPlan& plan) {
         if (plan.solveJoints) jointSolver_.solve(bodies_, false);
         if (plan.relaxContacts) pushLeft = contactSolver_.solve(bodies_, false);
     }
-    if (!pushLeft) return;
-    if (!plan.solveJoints) {
-        contactSolver_.relaxWherePushing(bodies_, ContactSolver::kMaxExtraRelaxPasses);
-        return;
-    }
-    for (int i = 0; pushLeft && i < ContactSolver::kMaxExtraRelaxPasses; ++i) {
-        jointSolver_.solve(bodies_, false);  // or contact-only passes tear a chain's joints
-        pushLeft = contactSolver_.relaxWherePushing(bodies_, 1);
+    // With joints, one contact pass at a time between joint passes (contact-only passes tear a
+    // chain's joints); without, all in one call.
+    const int passesPerCall = plan.solveJoints ? 1 : ContactSolver::kMaxExtraRelaxPasses;
+    for (int done = 0; pushLeft && done < ContactSolver::kMaxExtraRelaxPasses; done += passesPerCall) {
+        if (plan.solveJoints) jointSolver_.solve(bodies_, false);
+        pushLeft = contactSolver_.relaxWherePushing(bodies_, passesPerCall);
     }
 }
 
