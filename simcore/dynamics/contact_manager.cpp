@@ -164,15 +164,57 @@ void collideSubShapes(const BodyStorage& bodies, std::size_t a, std::uint32_t su
                   subShapeTransform(shapeB, subB, bodies.transform(b)), margin, manifold);
 }
 
+// Keeps the manifold just made in its bodies' frames, for reuseManifold.
+void keepInBodyFrames(Contact& contact, const Transform& ta, const Transform& tb) {
+    const ContactManifold& manifold = contact.manifold;
+    ManifoldInBodyFrames& kept = contact.manifoldInBodyFrames;
+    kept.valid = manifold.pointCount > 0;
+    if (!kept.valid) return;
+    kept.bInA = {ta.applyInverse(tb.position), glm::conjugate(ta.rotation) * tb.rotation};
+    kept.normalInA = ta.rotateInverse(manifold.normal);
+    kept.reachB = 0.0f;
+    for (int p = 0; p < manifold.pointCount; ++p) {
+        kept.pointInA[p] = ta.applyInverse(manifold.points[p].pointA);
+        kept.pointInB[p] = tb.applyInverse(manifold.points[p].pointB);
+        kept.reachB = std::max(kept.reachB, glm::length(kept.pointInB[p]));
+    }
+}
+
+// Moves the kept manifold's points with their bodies and measures their separations again, if no
+// point of B has moved against A by more than `reuseDistance` since it was made. Fresh SAT and
+// clipping would find the same features at points at most that far from these.
+bool reuseManifold(Contact& contact, const Transform& ta, const Transform& tb, float reuseDistance) {
+    const ManifoldInBodyFrames& kept = contact.manifoldInBodyFrames;
+    if (!kept.valid) return false;
+    const Vec3 shift = ta.applyInverse(tb.position) - kept.bInA.position;
+    // |xyz| of the turn since then is sin(angle / 2), whichever sign the quaternion has; a point at
+    // distance r from B's origin moves by 2 sin(angle / 2) r.
+    const Quat turn = glm::conjugate(kept.bInA.rotation) * (glm::conjugate(ta.rotation) * tb.rotation);
+    const float turnMove = 2.0f * glm::length(Vec3(turn.x, turn.y, turn.z)) * kept.reachB;
+    if (glm::length(shift) + turnMove > reuseDistance) return false;
+    ContactManifold& manifold = contact.manifold;
+    manifold.normal = ta.rotate(kept.normalInA);
+    for (int p = 0; p < manifold.pointCount; ++p) {
+        ContactPoint& point = manifold.points[p];
+        point.pointA = ta.apply(kept.pointInA[p]);
+        point.pointB = tb.apply(kept.pointInB[p]);
+        point.separation = glm::dot(point.pointB - point.pointA, manifold.normal);
+    }
+    return true;
+}
+
 // The narrow phase for one contact; false when it is to go: its bodies' fat boxes no longer
 // overlap, or, made by the mid-phase, its sub-shapes' grown bounds no longer do.
 bool refreshManifold(Contact& contact, const BodyStorage& bodies, const BroadPhase& broadPhase, float speculativeDistance,
-                     float timeStep) {
+                     float reuseDistance, float timeStep) {
     const std::size_t a = bodies.denseIndexOfSlot(contact.slotA);
     const std::size_t b = bodies.denseIndexOfSlot(contact.slotB);
     // A sleeping pair keeps its manifold, ready for when it wakes.
     if (!isAwakeDynamic(bodies, a) && !isAwakeDynamic(bodies, b)) return true;
     if (!broadPhase.testOverlap(bodies.proxy[a], bodies.proxy[b])) return false;
+    const Transform ta = bodies.transform(a);
+    const Transform tb = bodies.transform(b);
+    if (reuseManifold(contact, ta, tb, reuseDistance)) return true;
 
     const float margin = speculativeMargin(bodies, a, b, speculativeDistance, timeStep);
     // Fat boxes overlap long before shapes touch: when even the tight boxes, grown by the
@@ -181,6 +223,7 @@ bool refreshManifold(Contact& contact, const BodyStorage& bodies, const BroadPha
     if (!reach.overlaps(subShapeWorldBounds(bodies, b, contact.subShapeB))) {
         if (contact.ofSubShapeBodyPair) return false;  // the mid-phase makes it again when they near
         contact.manifold.pointCount = 0;
+        contact.manifoldInBodyFrames.valid = false;
         contact.impulses = {};
         contact.frictionImpulse = {};
         return true;
@@ -191,6 +234,7 @@ bool refreshManifold(Contact& contact, const BodyStorage& bodies, const BroadPha
 
     contact.impulses = matchImpulses(contact.manifold, contact.impulses, manifold);
     contact.manifold = manifold;
+    keepInBodyFrames(contact, ta, tb);
     return true;
 }
 
@@ -282,7 +326,7 @@ void ContactManager::findSubShapePairs(const BodyStorage& bodies, const BroadPha
 }
 
 void ContactManager::updateManifolds(const BodyStorage& bodies, const BroadPhase& broadPhase,
-                                     float speculativeDistance, float timeStep, TaskPool& pool) {
+                                     float speculativeDistance, float reuseDistance, float timeStep, TaskPool& pool) {
     // Each contact's update reads the bodies and writes only that contact, so the contacts are
     // refreshed in parallel and the separated ones removed after, in the order a single pass
     // would remove them (removal moves the last contact into the gap: the order is part of the
@@ -291,7 +335,7 @@ void ContactManager::updateManifolds(const BodyStorage& bodies, const BroadPhase
     separated_.resize(contacts_.size());
     pool.parallelFor(contacts_.size(), kNarrowPhaseGrain, [&](std::size_t, std::size_t begin, std::size_t end) {
         for (std::size_t c = begin; c < end; ++c)
-            separated_[c] = !refreshManifold(contacts_[c], bodies, broadPhase, speculativeDistance, timeStep);
+            separated_[c] = !refreshManifold(contacts_[c], bodies, broadPhase, speculativeDistance, reuseDistance, timeStep);
     });
     for (std::size_t c = 0; c < contacts_.size();) {
         if (!separated_[c]) {

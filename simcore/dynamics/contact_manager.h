@@ -34,6 +34,18 @@ struct FrictionImpulse {
     Vec3 rolling{0.0f};  // N m s, world frame: the angular impulse of rolling resistance (on B; -rolling on A)
 };
 
+// A manifold in its bodies' own frames, kept from the last time the narrow phase ran on the pair:
+// while the pair's relative pose stays within a small tolerance of the pose it was made at, its
+// points ride along with the bodies and only their separations are measured again (see
+// ContactManager::updateManifolds).
+struct ManifoldInBodyFrames {
+    Transform bInA;                                          // B's pose in A's frame when made
+    Vec3 normalInA{0.0f};
+    std::array<Vec3, kMaxManifoldPoints> pointInA{}, pointInB{};  // each point on its own body
+    float reachB = 0.0f;  // the farthest point from B's origin (m): how far a turn of B moves them
+    bool valid = false;   // false: no points, or not made yet
+};
+
 struct Contact {
     std::uint32_t slotA = 0, slotB = 0;  // body slots (BodyId::index): stable across removals
     std::uint32_t subShapeA = 0, subShapeB = 0;  // sub-shape of each body (0 for a convex shape)
@@ -44,6 +56,7 @@ struct Contact {
     bool dynamicPair = false;            // both bodies dynamic at creation: counts toward their contact cap
                                          // (false in a SubShapeBodyPair, which counts once for all)
     ContactManifold manifold;
+    ManifoldInBodyFrames manifoldInBodyFrames;
     std::array<ContactImpulse, kMaxManifoldPoints> impulses{};
     FrictionImpulse frictionImpulse;
 };
@@ -73,8 +86,14 @@ public:
     // sub-shapes' grown bounds) no longer overlap. Points are kept while their
     // separation is within speculativeDistance plus how far the bodies can approach in timeStep.
     // Contacts are refreshed on the pool's threads; the result does not depend on their number.
+    //
+    // A pair whose relative pose moved by less than `reuseDistance` (m: any point of it, turning
+    // included) since its manifold was made keeps that manifold: its points stay on the features
+    // they were on and only their separations are measured again. A resting pair's pose changes by
+    // micrometres a step, and running SAT and clipping on it anew was most of the narrow phase of a
+    // resting pyramid.
     void updateManifolds(const BodyStorage& bodies, const BroadPhase& broadPhase, float speculativeDistance,
-                         float timeStep, TaskPool& pool);
+                         float reuseDistance, float timeStep, TaskPool& pool);
 
     void removeContactsOf(std::uint32_t slot);
     // Recombines friction, restitution and rolling resistance of the contacts of one body slot after

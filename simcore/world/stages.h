@@ -41,7 +41,7 @@ inline constexpr std::array<StageInfo, kStageCount> kStages{{
      "broad phase: the fat boxes of awake bodies move in the tree; new overlapping pairs become contacts",
      "contacts off, no awake dynamic body, or fewer than two bodies"},
     {Stage::Collide, "collide", "collide", false,
-     "narrow phase: a fresh manifold for every contact with an awake body, impulses carried over",
+     "narrow phase: a manifold for every contact with an awake body (kept while the pair hardly moved), impulses carried over",
      "as pairs"},
     {Stage::Islands, "islands", "islands", false,
      "islands over contacts and joints: bodies touching an awake island wake with it",

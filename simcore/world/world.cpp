@@ -352,7 +352,13 @@ std::size_t World::updateBroadPhase(float dt) {
 }
 
 void World::updateContacts() {
-    contactManager_.updateManifolds(bodies_, broadPhase_, settings_.contact.speculativeDistance, settings_.timeStep, threads_.pool());
+    // A manifold is made again once its pair has moved against itself by a tenth of the slop
+    // (0.5 mm at the defaults): its points are then at most that far from where fresh clipping
+    // would put them, an error well inside what the slop already lets a contact overlap.
+    constexpr float kManifoldReuseSlopFraction = 0.1f;
+    contactManager_.updateManifolds(bodies_, broadPhase_, settings_.contact.speculativeDistance,
+                                    kManifoldReuseSlopFraction * settings_.contact.linearSlop, settings_.timeStep,
+                                    threads_.pool());
 }
 
 void World::recordSweepStarts() {
