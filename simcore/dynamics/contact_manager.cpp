@@ -180,12 +180,11 @@ void keepInBodyFrames(Contact& contact, const Transform& ta, const Transform& tb
     }
 }
 
-// Moves the kept manifold's points with their bodies and measures their separations again, if no
+// Moves the kept (valid) manifold's points with their bodies and measures their separations again, if no
 // point of B has moved against A by more than `reuseDistance` since it was made. Fresh SAT and
 // clipping would find the same features at points at most that far from these.
 bool reuseManifold(Contact& contact, const Transform& ta, const Transform& tb, float reuseDistance) {
     const ManifoldInBodyFrames& kept = contact.manifoldInBodyFrames;
-    if (!kept.valid) return false;
     const Vec3 shift = ta.applyInverse(tb.position) - kept.bInA.position;
     // |xyz| of the turn since then is sin(angle / 2), whichever sign the quaternion has; a point at
     // distance r from B's origin moves by 2 sin(angle / 2) r.
@@ -212,9 +211,9 @@ bool refreshManifold(Contact& contact, const BodyStorage& bodies, const BroadPha
     // A sleeping pair keeps its manifold, ready for when it wakes.
     if (!isAwakeDynamic(bodies, a) && !isAwakeDynamic(bodies, b)) return true;
     if (!broadPhase.testOverlap(bodies.proxy[a], bodies.proxy[b])) return false;
-    const Transform ta = bodies.transform(a);
-    const Transform tb = bodies.transform(b);
-    if (reuseManifold(contact, ta, tb, reuseDistance)) return true;
+    if (contact.manifoldInBodyFrames.valid &&
+        reuseManifold(contact, bodies.transform(a), bodies.transform(b), reuseDistance))
+        return true;
 
     const float margin = speculativeMargin(bodies, a, b, speculativeDistance, timeStep);
     // Fat boxes overlap long before shapes touch: when even the tight boxes, grown by the
@@ -234,7 +233,7 @@ bool refreshManifold(Contact& contact, const BodyStorage& bodies, const BroadPha
 
     contact.impulses = matchImpulses(contact.manifold, contact.impulses, manifold);
     contact.manifold = manifold;
-    keepInBodyFrames(contact, ta, tb);
+    keepInBodyFrames(contact, bodies.transform(a), bodies.transform(b));
     return true;
 }
 
