@@ -121,6 +121,10 @@ void TestStages::skipReasonsFollowTheScene_data() {
     row("Baumgarte: still solves", "baumgarte", Stage::Solve, StageSkip::Ran);
     row("static only: nothing awake", "staticOnly", Stage::Pairs, StageSkip::NothingAwake);
     row("static only: no sleep", "staticOnly", Stage::Sleep, StageSkip::NothingAwake);
+    row("static only: no velocities", "staticOnly", Stage::IntegrateVelocities, StageSkip::NothingMoves);
+    row("static only: no positions", "staticOnly", Stage::IntegratePositions, StageSkip::NothingMoves);
+    row("kinematic only: moves", "kinematicOnly", Stage::IntegratePositions, StageSkip::Ran);
+    row("kinematic only: nothing awake to collide", "kinematicOnly", Stage::Collide, StageSkip::NothingAwake);
     row("apart: no constraint", "apart", Stage::Solve, StageSkip::NoConstraint);
     row("apart: no restitution", "apart", Stage::Restitution, StageSkip::NoConstraint);
 }
@@ -146,6 +150,12 @@ void TestStages::skipReasonsFollowTheScene() {
         BodyCreationSettings post = cube(Vec3(0.0f, 0.5f, 0.0f));
         post.motion = MotionType::Static;
         world.createBody(post);
+    } else if (scene == "kinematicOnly") {
+        addGround(world);
+        BodyCreationSettings platform = cube(Vec3(0.0f, 2.0f, 0.0f));
+        platform.motion = MotionType::Kinematic;
+        platform.linearVelocity = Vec3(1.0f, 0.0f, 0.0f);
+        world.createBody(platform);
     } else if (scene == "apart") {
         // Two cubes 10 m apart in zero gravity: awake, paired by nothing.
         settings.gravity = Vec3(0.0f);

@@ -93,7 +93,9 @@ void World::unfilterJointPair(BodyId a, BodyId b) {
 World::Activity World::scanActivity() const {
     Activity activity;
     for (std::size_t i = 0; i < bodies_.size(); ++i) {
-        if (bodies_.motion[i] != MotionType::Dynamic || !bodies_.awake[i]) continue;
+        if (bodies_.motion[i] == MotionType::Static || !bodies_.awake[i]) continue;
+        activity.anyAwakeMoving = true;
+        if (bodies_.motion[i] != MotionType::Dynamic) continue;
         activity.anyAwakeDynamic = true;
         if (lengthSquared(bodies_.angularVelocity[i]) > 0.0f) {
             activity.anySpinning = true;
@@ -202,6 +204,11 @@ World::StepPlan World::planStep(StageSkips& skipped) const {
                                                                       : StageSkip::NothingToSolve;
     skipped.fill(StageSkip::Ran);
     auto skip = [&skipped](Stage stage, StageSkip why) { skipped[static_cast<std::size_t>(stage)] = why; };
+    // Sleeping and static bodies are not integrated; a world where nothing else is left costs only
+    // this scan.
+    const StageSkip nothingMoves = plan.activity.anyAwakeMoving ? StageSkip::Ran : StageSkip::NothingMoves;
+    skip(Stage::IntegrateVelocities, nothingMoves);
+    skip(Stage::IntegratePositions, nothingMoves);
     skip(Stage::Pairs, noContacts);
     skip(Stage::Collide, noContacts);
     skip(Stage::Islands, nothingToSolve);

@@ -247,6 +247,7 @@ private:
 
     // What the awake bodies are doing, gathered once per step to decide which effects run.
     struct Activity {
+        bool anyAwakeMoving = false;  // an awake dynamic or kinematic body
         bool anyAwakeDynamic = false;
         bool anySpinning = false;
     };
