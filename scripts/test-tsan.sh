@@ -6,6 +6,8 @@
 # and the caller; test_threads also runs 2 and 4 threads against 1 bit for bit. The first report
 # ends the run and fails it. Left out: the editor (not built here; its suites run in the Release
 # stage) and the long stability suite (label long: minutes in Release, far longer here).
+# Measured on a clean build-tsan/, the 2-core machine shared (load 4-6.5, 2026-12-03): 9 min 40 s,
+# the build 3 min 57 s and the 39 suites 5 min 36 s, two at a time (docs/testing.md, "Reliability").
 #   ./scripts/test-tsan.sh [CTEST ARGS...]     e.g. -R test_threads
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
