@@ -8,6 +8,11 @@
 #include <cstdint>
 #include <string_view>
 
+// The default of WorldSettings::threads; set only by the CMake option of the same name.
+#ifndef SIMCORE_DEFAULT_THREADS
+#define SIMCORE_DEFAULT_THREADS 1
+#endif
+
 namespace simcore {
 
 // Physical effects a step can include. An effect runs only when enabled here *and* something in
@@ -123,8 +128,10 @@ struct WorldSettings {
     int substeps = 4;                  // the step is split into this many equal substeps
     // Threads the step's data-parallel stages run on, the caller's included; 0: one per core.
     // Results are the same bits for any count. 1 (no worker threads) by default: 2 were no faster
-    // on the benchmark scenes on a 2-core machine (bench/results/README.md, "Threads").
-    int threads = 1;
+    // on the benchmark scenes on a 2-core machine (bench/results/README.md, "Threads"). Only the
+    // ThreadSanitizer build changes the default (CMake option SIMCORE_DEFAULT_THREADS), so that
+    // every world its suites build, in code or from a file without "threads", steps on workers.
+    int threads = SIMCORE_DEFAULT_THREADS;
     Integrator integrator = Integrator::SymplecticEuler;
     SolverSettings solver;
     ContactSettings contact;

@@ -12,11 +12,11 @@
 #include "simcore/world/world.h"
 
 #include "support/allocation_counter.h"
+#include "support/run_program.h"
 #include "support/worlds.h"
 
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QProcess>
 #include <QtTest>
 
 #include <algorithm>
@@ -947,11 +947,11 @@ void TestJoints::demoScenesInTheRunner() {
     QFETCH(QString, scene);
     QFETCH(int, joints);
     QFETCH(double, bound);
-    QProcess process;
-    process.start(INTERPLAY_RUN_PATH, {QString(INTERPLAY_SOURCE_DIR) + "/scenes/" + scene + ".json", "--steps", "600"});
-    QVERIFY(process.waitForFinished(60000));
-    QCOMPARE(process.exitCode(), 0);
-    const QJsonObject report = QJsonDocument::fromJson(process.readAllStandardOutput()).object();
+    const test_support::ProgramRun run = test_support::runProgram(
+        INTERPLAY_RUN_PATH, {QString(INTERPLAY_SOURCE_DIR) + "/scenes/" + scene + ".json", "--steps", "600"});
+    QVERIFY(run.finished);
+    QCOMPARE(run.exitCode, 0);
+    const QJsonObject report = QJsonDocument::fromJson(run.out).object();
     const QJsonObject metrics = report["metrics"].toObject();
     QCOMPARE(metrics["jointCount"].toInt(), joints);
     QVERIFY(report["effects"].toObject()["joints"].toBool());

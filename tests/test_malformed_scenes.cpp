@@ -4,6 +4,8 @@
 
 #include "simcore/io/scene_io.h"
 
+#include "support/run_program.h"
+
 #include <QtTest>
 
 #include <fstream>
@@ -265,27 +267,25 @@ private slots:
         QVERIFY(dir.isValid());
         writeFile(dir.filePath("scene.json"), content);
 
-        QProcess process;
-        process.setWorkingDirectory(dir.path());  // so the file is named "scene.json" in messages
-        process.start(INTERPLAY_RUN_PATH, QStringList{"scene.json", "--steps", "1"} + extraArguments);
-        QVERIFY2(process.waitForFinished(30000), "interplay-run did not finish within 30 s");
-        const QString err = QString::fromUtf8(process.readAllStandardError());
-        QCOMPARE(process.exitStatus(), QProcess::NormalExit);
-        QVERIFY2(process.exitCode() == exitCode,
-                 qPrintable(QString("exit code %1, expected %2; stderr:\n%3").arg(process.exitCode()).arg(exitCode).arg(err)));
+        // In the scene's folder, so the file is named "scene.json" in messages.
+        const test_support::ProgramRun run = test_support::runProgram(
+            INTERPLAY_RUN_PATH, QStringList{"scene.json", "--steps", "1"} + extraArguments, 30'000, dir.path());
+        const QString err = QString::fromUtf8(run.err);
+        QVERIFY2(run.finished, "interplay-run did not exit by itself within 30 s");
+        QVERIFY2(run.exitCode == exitCode,
+                 qPrintable(QString("exit code %1, expected %2; stderr:\n%3").arg(run.exitCode).arg(exitCode).arg(err)));
         for (const QString& e : expected) QVERIFY2(err.contains(e), qPrintable(e + " not in:\n" + err));
-        if (exitCode == 3) QVERIFY(process.readAllStandardOutput().isEmpty());  // no report for an unread scene
+        if (exitCode == 3) QVERIFY(run.out.isEmpty());  // no report for an unread scene
     }
 
     void runnerMissingFile() {
         QTemporaryDir dir;
         QVERIFY(dir.isValid());
         const QString path = dir.filePath("absent.json");
-        QProcess process;
-        process.start(INTERPLAY_RUN_PATH, {path, "--steps", "1"});
-        QVERIFY(process.waitForFinished(30000));
-        QCOMPARE(process.exitCode(), 3);
-        const QString err = QString::fromUtf8(process.readAllStandardError());
+        const test_support::ProgramRun run = test_support::runProgram(INTERPLAY_RUN_PATH, {path, "--steps", "1"}, 30'000);
+        QVERIFY(run.finished);
+        QCOMPARE(run.exitCode, 3);
+        const QString err = QString::fromUtf8(run.err);
         QVERIFY2(err.contains(path) && err.contains("No such file"), qPrintable(err));
     }
 

@@ -6,10 +6,10 @@
 #include "simcore/world/quality_preset.h"
 #include "simcore/world/world.h"
 
+#include "support/run_program.h"
 #include "support/scene_builders.h"
 
 #include <QFile>
-#include <QProcess>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -53,10 +53,8 @@ struct RunResult {
 };
 
 RunResult runRunner(const QStringList& arguments) {
-    QProcess process;
-    process.start(INTERPLAY_RUN_PATH, arguments);
-    process.waitForFinished(30000);
-    return {process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1, process.readAllStandardError()};
+    const test_support::ProgramRun run = test_support::runProgram(INTERPLAY_RUN_PATH, arguments, 30'000);
+    return {run.exitCode, run.err};
 }
 
 }  // namespace

@@ -3,6 +3,8 @@
 #include "simcore/settings_schema.h"
 #include "simcore/world/stages.h"
 
+#include "support/run_program.h"
+
 #include <QtTest>
 
 #include <nlohmann/json.hpp>
@@ -19,12 +21,8 @@ struct RunResult {
 };
 
 RunResult runRunner(const QStringList& arguments) {
-    QProcess process;
-    process.start(INTERPLAY_RUN_PATH, arguments);
-    if (!process.waitForFinished(60'000)) return {};
-    return {process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1,
-            QString::fromUtf8(process.readAllStandardOutput()),
-            QString::fromUtf8(process.readAllStandardError())};
+    const test_support::ProgramRun run = test_support::runProgram(INTERPLAY_RUN_PATH, arguments);
+    return {run.exitCode, QString::fromUtf8(run.out), QString::fromUtf8(run.err)};
 }
 
 // A sphere thrown from (0, 10, 0) at (2, 3, 0) m/s, alone in the world.

@@ -4,10 +4,10 @@
 // the stages in the same order, saying which were skipped and why.
 
 #include "support/scene_builders.h"
+#include "support/run_program.h"
 
 #include "simcore/world/world.h"
 
-#include <QProcess>
 #include <QtTest>
 
 #include <nlohmann/json.hpp>
@@ -206,11 +206,11 @@ void TestStages::bouncyContactRunsRestitution() {
 }
 
 void TestStages::runnerReportListsStagesInOrderWithSkips() {
-    QProcess process;
-    process.start(INTERPLAY_RUN_PATH, {QString(INTERPLAY_SOURCE_DIR) + "/scenes/bench/pyramid10.json", "--steps", "5"});
-    QVERIFY(process.waitForFinished(60'000));
-    QCOMPARE(process.exitCode(), 0);
-    const auto report = nlohmann::json::parse(process.readAllStandardOutput().toStdString());
+    const test_support::ProgramRun run =
+        test_support::runProgram(INTERPLAY_RUN_PATH, {QString(INTERPLAY_SOURCE_DIR) + "/scenes/bench/pyramid10.json", "--steps", "5"});
+    QVERIFY(run.finished);
+    QCOMPARE(run.exitCode, 0);
+    const auto report = nlohmann::json::parse(run.out.toStdString());
     const auto& stages = report["stages"];
     QVERIFY(stages.is_array());
     QCOMPARE(stages.size(), kStages.size());
@@ -234,11 +234,10 @@ void TestStages::runnerReportListsStagesInOrderWithSkips() {
 }
 
 void TestStages::runnerListsTheStageTable() {
-    QProcess process;
-    process.start(INTERPLAY_RUN_PATH, {"--list-stages"});
-    QVERIFY(process.waitForFinished(60'000));
-    QCOMPARE(process.exitCode(), 0);
-    const QStringList lines = QString::fromUtf8(process.readAllStandardOutput()).split('\n', Qt::SkipEmptyParts);
+    const test_support::ProgramRun run = test_support::runProgram(INTERPLAY_RUN_PATH, {"--list-stages"});
+    QVERIFY(run.finished);
+    QCOMPARE(run.exitCode, 0);
+    const QStringList lines = QString::fromUtf8(run.out).split('\n', Qt::SkipEmptyParts);
     QCOMPARE(lines.size(), kStageCount + 2);  // header, rule, one row per stage
     for (int s = 0; s < kStageCount; ++s) {
         const QString expected = QString("| %1 | `%2` |").arg(s + 1).arg(kStages[static_cast<std::size_t>(s)].key.data());

@@ -5,6 +5,21 @@
 #include <cstdlib>
 #include <new>
 
+// ThreadSanitizer's runtime defines operator new and delete itself, in archives the driver links
+// whole and ahead of every object file, so a replacement here would never be called (the
+// counter counted nothing under TSan). There the runtime's allocation hook counts instead: every
+// heap allocation, malloc included, a stricter count than operator new's.
+#if defined(__SANITIZE_THREAD__)
+#define INTERPLAY_COUNT_BY_HOOK 1
+#elif defined(__has_feature)
+#if __has_feature(thread_sanitizer)
+#define INTERPLAY_COUNT_BY_HOOK 1
+#endif
+#endif
+#ifdef INTERPLAY_COUNT_BY_HOOK
+#include <sanitizer/allocator_interface.h>
+#endif
+
 namespace {
 
 std::atomic<bool> counting{false};
@@ -14,6 +29,11 @@ void count() {
     if (counting.load(std::memory_order_relaxed)) allocations.fetch_add(1, std::memory_order_relaxed);
 }
 
+#ifdef INTERPLAY_COUNT_BY_HOOK
+void onAllocation(const volatile void*, std::size_t) { count(); }
+void onFree(const volatile void*) {}
+[[maybe_unused]] const int hookInstalled = __sanitizer_install_malloc_and_free_hooks(onAllocation, onFree);
+#else
 void* allocate(std::size_t size) {
     count();
     if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
@@ -27,6 +47,7 @@ void* allocateAligned(std::size_t size, std::align_val_t alignment) {
     if (void* p = std::aligned_alloc(align, rounded)) return p;
     throw std::bad_alloc();
 }
+#endif
 
 }  // namespace
 
@@ -43,6 +64,8 @@ std::size_t stopCountingAllocations() {
 }
 
 }  // namespace test_support
+
+#ifndef INTERPLAY_COUNT_BY_HOOK
 
 void* operator new(std::size_t size) { return allocate(size); }
 void* operator new[](std::size_t size) { return allocate(size); }
@@ -77,3 +100,4 @@ void operator delete(void* p, std::align_val_t) noexcept { std::free(p); }
 void operator delete[](void* p, std::align_val_t) noexcept { std::free(p); }
 void operator delete(void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
 void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
+#endif  // INTERPLAY_COUNT_BY_HOOK

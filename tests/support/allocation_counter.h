@@ -1,6 +1,7 @@
 #pragma once
 // Counts heap allocations between start and stop, to prove that hot paths never allocate. A test
-// that links allocation_counter.cpp has every global operator new replaced by a counting one.
+// that links allocation_counter.cpp has every global operator new replaced by a counting one
+// (under ThreadSanitizer, whose runtime keeps its own, every heap allocation counted by its hook).
 
 #include <cstddef>
 

@@ -2,9 +2,9 @@
 // Runs the headless runner (INTERPLAY_RUN_PATH) on a scene and reads the bodies of its report back
 // as BodyStates, so a runner's final state hashes like a World's (state_hash.h).
 
+#include "run_program.h"
 #include "state_hash.h"
 
-#include <QProcess>
 #include <QString>
 #include <QStringList>
 
@@ -33,16 +33,16 @@ inline std::vector<BodyState> bodyStates(const nlohmann::json& report) {
 
 // `interplay-run SCENE --steps N`: the final body states, or nothing with the reason in *error.
 inline std::optional<std::vector<BodyState>> runnerBodyStates(const QString& scenePath, int steps, QString* error) {
-    QProcess runner;
-    runner.start(QStringLiteral(INTERPLAY_RUN_PATH), {scenePath, QStringLiteral("--steps"), QString::number(steps)});
-    if (!runner.waitForFinished(120'000) || runner.exitStatus() != QProcess::NormalExit || runner.exitCode() != 0) {
+    const ProgramRun run = runProgram(QStringLiteral(INTERPLAY_RUN_PATH), {scenePath, QStringLiteral("--steps"), QString::number(steps)},
+                                      120'000);
+    if (!run.finished || run.exitCode != 0) {
         *error = QStringLiteral("interplay-run %1 failed (exit %2): %3")
                      .arg(scenePath)
-                     .arg(runner.exitCode())
-                     .arg(QString::fromLocal8Bit(runner.readAllStandardError()));
+                     .arg(run.exitCode)
+                     .arg(QString::fromLocal8Bit(run.err));
         return std::nullopt;
     }
-    return bodyStates(nlohmann::json::parse(runner.readAllStandardOutput().toStdString()));
+    return bodyStates(nlohmann::json::parse(run.out.toStdString()));
 }
 
 }  // namespace test_support
