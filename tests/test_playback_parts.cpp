@@ -1,5 +1,5 @@
 // The parts Play runs on, alone and without a window: the worker thread runs each job away from
-// the caller, in order, and wait() returns once the job and its `done` have; the real-time meter
+// the caller, in order, and stop() ends one that sleeps at once; the real-time meter
 // gives simulated seconds per wall second over its window; a snapshot holds what World::draw
 // emits; and the controller, playing, steps on the worker while the caller's event loop runs,
 // shows in snapshot() what the last batch left, and lets world() in only after the step in flight.
@@ -15,6 +15,7 @@
 #include <QSignalSpy>
 #include <QTest>
 
+#include <chrono>
 #include <thread>
 #include <vector>
 
@@ -48,6 +49,7 @@ class TestPlaybackParts : public QObject {
 
 private slots:
     void workerRunsEachJobAwayFromTheCallerInOrder();
+    void workerStopEndsAJobThatSleeps();
     void meterGivesSimulatedSecondsPerWallSecond_data();
     void meterGivesSimulatedSecondsPerWallSecond();
     void meterForgetsWhatRanBeforeItsWindow();
@@ -57,17 +59,32 @@ private slots:
 
 void TestPlaybackParts::workerRunsEachJobAwayFromTheCallerInOrder() {
     WorkerThread worker;
-    std::vector<int> order;  // the jobs' and their done's, in the order they ran
+    std::vector<int> order;  // the jobs, in the order they ran
     std::thread::id jobThread;
-    const auto first = [&] {
+    worker.start([&] {
         jobThread = std::this_thread::get_id();
         order.push_back(1);
-    };
-    worker.start(first, [&] { order.push_back(2); });
-    worker.start([&] { order.push_back(3); });  // waits for the first
+    });
+    worker.start([&] { order.push_back(2); });  // waits for the first
     worker.wait();
     QVERIFY(jobThread != std::this_thread::get_id());
-    QCOMPARE(order, (std::vector<int>{1, 2, 3}));
+    QCOMPARE(order, (std::vector<int>{1, 2}));
+}
+
+void TestPlaybackParts::workerStopEndsAJobThatSleeps() {
+    WorkerThread worker;
+    bool slept = true;
+    worker.start([&] { slept = worker.sleepFor(std::chrono::seconds(60)); });
+    QElapsedTimer clock;
+    clock.start();
+    worker.stop();
+    QVERIFY(!slept);
+    QVERIFY2(clock.elapsed() < 5000, qPrintable(QString::number(clock.elapsed())));
+    // The next job is not asked to stop.
+    bool stopRequested = true;
+    worker.start([&] { stopRequested = worker.stopRequested() || !worker.sleepFor(std::chrono::milliseconds(1)); });
+    worker.wait();
+    QVERIFY(!stopRequested);
 }
 
 void TestPlaybackParts::meterGivesSimulatedSecondsPerWallSecond_data() {

@@ -14,12 +14,8 @@
 #include <utility>
 
 namespace interplay {
-SimulationController::SimulationController(QObject* parent) : QObject(parent) {
-    // A tick per display frame; the accumulator, not the timer's accuracy, sets the simulated rate.
-    m_timer.setInterval(kTickMs);
-    m_timer.setTimerType(Qt::PreciseTimer);
-    connect(&m_timer, &QTimer::timeout, this, &SimulationController::tick);
-}
+
+SimulationController::SimulationController(QObject* parent) : QObject(parent) {}
 
 SimulationController::~SimulationController() {
     settle();  // the worker's batch uses the members destroyed before it

@@ -1,22 +1,24 @@
 #pragma once
 // Owns the running world. Play runs a copy of the authored scene; Reset rebuilds it from that scene,
-// so the simulation never changes what the document holds. A timer drives real-time playback with
-// a fixed-step accumulator; stepOnce/stepFrames advance deterministically, whatever the clock says.
+// so the simulation never changes what the document holds. Play runs in real time with a
+// fixed-step accumulator; stepOnce/stepFrames advance deterministically, whatever the clock says.
 //
-// Play steps the world off the GUI thread, so a slow scene never makes the window slow: each tick
-// hands the steps the clock owes (at most kMaxCatchUpSteps, the rest of a backlog dropped) to one
-// worker thread as a batch, which ends early once it has run a tick's time, so a new state shows
-// every frame even when the steps cannot keep up. At its end the worker takes a WorldSnapshot (the
-// bodies' poses, the joints and the overlays asked for), and stepped() follows on the GUI thread.
-// While a batch is in flight the worker alone touches the world, the timeline and the recording
-// times; the GUI thread reaches them only through settle(), which every public entry that reads or
-// changes them calls first: it asks the batch to stop after the step under way, waits for it and
-// takes in what it did. So an edit, a pick or a panel's read waits at most one step, and never
-// races with the worker. The viewport draws snapshot() and never waits. The signals a batch
-// causes (stepped, timelineChanged, simulationWarning, simulationError) come from the event loop
-// after it, never from inside settle(). playbackRate() says how fast the run goes against the
-// wall clock, and whether it keeps up. A step, a run and a recording are the same bits whichever
-// thread runs them: what a step does never depends on how the steps are batched.
+// Play steps the world off the GUI thread, so a slow scene never makes the window slow, and a slow
+// window (a software renderer, a busy machine) slows the run only when a frame takes longer than
+// kMaxCatchUpSteps steps simulate: one worker thread runs a batch of steps, each when the clock owes
+// it (after a stall at most kMaxCatchUpSteps back to back, the rest of the backlog dropped), for a
+// tick (kTickMs) and at least one step. It then takes a WorldSnapshot (the bodies' poses, the
+// joints and the overlays asked for) and asks the GUI thread, by a queued call, to take it in; the
+// GUI thread announces it (stepped() and the rest) and starts the next at once. While a batch is in
+// flight the worker alone touches the world, the timeline and the recording times; the GUI thread
+// reaches them only through settle(), which every public entry that reads or changes them calls
+// first: it asks the batch to end after the step under way, waits for it and takes in what it did.
+// So an edit, a pick or a panel's read waits one step at most and never races with the worker. The
+// viewport draws snapshot() and never waits. The signals a batch causes (stepped, timelineChanged,
+// simulationWarning, simulationError) come from the event loop, never from inside settle().
+// playbackRate() says how fast the run goes against the wall clock, and whether it keeps up. A
+// step, a run and a recording are the same bits whichever thread runs them: what a step does never
+// depends on how the steps are batched.
 // Interaction with the running world (grabbing a body with a spring, throwing new bodies) goes
 // through simcore's public API only and is forgotten on Reset.
 //
@@ -63,11 +65,9 @@
 #include <QElapsedTimer>
 #include <QObject>
 #include <QString>
-#include <QTimer>
 
 class QUndoCommand;
 
-#include <atomic>
 #include <deque>
 #include <functional>
 #include <memory>
@@ -131,7 +131,7 @@ public:
     std::optional<PlaybackRate> playbackRate() const;
     static constexpr double kKeepingUpFraction = 0.9;
 
-    bool isPlaying() const { return m_timer.isActive(); }
+    bool isPlaying() const { return m_playing; }
     // Simulated seconds per real second during playback (slow motion below 1).
     double timeScale() const { return m_timeScale; }
     static constexpr double kMinTimeScale = 0.05;
@@ -197,10 +197,10 @@ public:
     double recordingMs();
     static constexpr std::size_t kRecordingMsSteps = 600;
 
-    // Real-time catch-up limit: after a stall (debugger, slow frame) at most this many steps run
-    // per tick and the rest of the backlog is dropped, so the loop never spirals.
+    // Real-time catch-up limit: after a stall (debugger, a step slower than real time) at most this
+    // many steps run back to back and the rest of the backlog is dropped, so the loop never spirals.
     static constexpr int kMaxCatchUpSteps = 8;
-    // The tick (ms): one per display frame. A batch of steps stops after the step that ends past it.
+    // The tick (ms): one per display frame. A played batch is taken in at most once a tick.
     static constexpr int kTickMs = 16;
 
 public slots:
@@ -244,10 +244,13 @@ private:
 
     // Steps run together, on the worker while playing or at once by stepFrames, and what they did.
     struct Batch {
-        int steps = 0;                       // asked for
-        bool played = false;                 // Play's: it may stop early (see the top of this file)
         std::optional<Grab> grab;            // as it was when the batch began
         simcore::DebugDrawOptions overlays;  // for the snapshot
+        // Played: the clock since Play, how much of it (ns) `owed` counts, and the rate asked for.
+        QElapsedTimer clock;
+        qint64 counted = 0;
+        double owed = 0.0;  // s of simulated time due and not yet run
+        double timeScale = 1.0;
         // What it did.
         int stepsRun = 0;
         std::vector<RunSample> samples;
@@ -264,15 +267,23 @@ private:
     };
     enum class BatchState { None, Running, Settled };  // Settled: taken in, not yet announced
 
-    void tick();
     // Runs `steps` at once on this thread and announces them.
     void advance(int steps);
-    Batch beginBatch(int steps, bool played);
-    void runBatch(Batch& batch);  // on either thread; touches the world, timeline and recording times
-    void takeIn(Batch& batch);    // on the GUI thread, after runBatch
+    // Starts Play's next batch on the worker.
+    void startPlayedBatch();
+    // The played batch asked to be taken in (a queued call from the worker): ended, announced, and
+    // the next one started.
+    void finishPlayedBatch();
+    Batch beginBatch();
+    // On the worker: steps in real time for a tick, at least one step, or until asked to stop
+    // (or the world goes non-finite); then asks the GUI thread to take it in.
+    void runPlayedBatch(Batch& batch);
+    // On either thread: one step, recorded. A batch's steps touch the world, the timeline and the
+    // recording times.
+    void runStep(Batch& batch);
+    void endBatch(Batch& batch);  // on the thread that stepped: the snapshot
+    void takeIn(Batch& batch);    // on the GUI thread, after the batch ended
     void announce();
-    // The worker's batch is over (a queued call from it): announced, and the next begun if owed.
-    void finishBatch();
     // Waits for the batch in flight, if any, after asking it to stop after the step under way, and
     // takes in what it did. After it the GUI thread has the world until it returns to the event loop.
     void settle();
@@ -320,11 +331,11 @@ private:
     bool m_changedSinceFrame = false;  // the world was changed between steps since the last frame
     std::deque<double> m_recordingMs;  // the last steps' recording times
 
-    QTimer m_timer;
-    QElapsedTimer m_clock;
-    double m_accumulator = 0.0;  // s of simulated time not yet run
+    bool m_playing = false;
+    QElapsedTimer m_clock;       // since Play
+    qint64 m_counted = 0;        // ns of m_clock counted into m_accumulator
+    double m_accumulator = 0.0;  // s of simulated time due and not yet run, between batches
     double m_timeScale = 1.0;
-    QElapsedTimer m_playClock;  // since Play, for the meter
     RealTimeMeter m_meter;
 
     WorldSnapshot m_snapshot;
@@ -333,8 +344,7 @@ private:
     Batch m_batch;  // the worker's while m_batchState is Running
     BatchState m_batchState = BatchState::None;
     Announcement m_announcement;
-    std::atomic<bool> m_stopRequested{false};  // settle() asks the batch in flight to stop
-    WorkerThread m_worker;                     // last: destroyed first, once nothing is in flight
+    WorkerThread m_worker;  // last: destroyed first, once nothing is in flight
 };
 
 }  // namespace interplay

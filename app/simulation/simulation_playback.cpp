@@ -7,6 +7,8 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include <algorithm>
+#include <chrono>
+#include <cstdint>
 #include <utility>
 
 namespace interplay {
@@ -27,17 +29,18 @@ double seconds(const QElapsedTimer& clock) {
 void SimulationController::play() {
     if (!m_built || isPlaying()) return;
     rebuildIfEditedBeforeRun();
-    m_accumulator = 0.0;
+    m_playing = true;
     m_clock.start();
-    m_playClock.start();
+    m_counted = 0;
+    m_accumulator = 0.0;
     m_meter.restart(0.0);
-    m_timer.start();
+    if (m_batchState == BatchState::None) startPlayedBatch();  // else the batch ending starts it
     emit playingChanged(true);
 }
 
 void SimulationController::pause() {
     if (!isPlaying()) return;
-    m_timer.stop();
+    m_playing = false;
     // The batch in flight ends after its step under way and is announced now: once paused,
     // nothing more is stepped or announced.
     settle();
@@ -85,7 +88,7 @@ void SimulationController::setTimeScale(double scale) {
     scale = std::clamp(scale, kMinTimeScale, kMaxTimeScale);
     if (scale == m_timeScale) return;
     m_timeScale = scale;
-    if (isPlaying()) m_meter.restart(seconds(m_playClock));  // the rate before was another scale's
+    if (isPlaying()) m_meter.restart(seconds(m_clock));  // the rate before was another scale's
     emit timeScaleChanged(m_timeScale);
 }
 
@@ -115,10 +118,11 @@ void SimulationController::setSnapshotOverlays(const simcore::DebugDrawOptions& 
 
 void SimulationController::settle() {
     if (m_batchState != BatchState::Running) return;
-    m_stopRequested = true;
-    m_worker.wait();
-    m_stopRequested = false;
+    m_worker.stop();
     m_batchState = BatchState::Settled;
+    m_accumulator = m_batch.owed;  // what was due and not run is due still
+    m_counted = m_batch.counted;
+    m_meter.add(seconds(m_clock), m_batch.stepsRun * m_built->world.settings().timeStep);
     takeIn(m_batch);
 }
 
@@ -130,77 +134,90 @@ simcore::World& SimulationController::changeWorld() {
 
 // ---- Batches of steps -----------------------------------------------------------------------------
 
-void SimulationController::tick() {
-    if (!m_built) return;
-    m_accumulator += seconds(m_clock) * m_timeScale;
-    m_clock.restart();
-    // The worker has the world, or its steps are not announced yet: they are counted when it is.
-    if (m_batchState != BatchState::None) return;
-    const double dt = m_built->world.settings().timeStep;
-    if (!(dt > 0.0)) return;  // the world validates this; never loop on a zero step
-    int steps = static_cast<int>(m_accumulator / dt);
-    if (steps > kMaxCatchUpSteps) {
-        steps = kMaxCatchUpSteps;
-        m_accumulator = 0.0;  // drop the backlog: run slower than real time rather than stall
-    } else {
-        m_accumulator -= steps * dt;
-    }
-    if (steps == 0) return;
-    snapshot();  // up to date before the worker has the world: the views draw it meanwhile
-    m_batch = beginBatch(steps, true);
-    m_batchState = BatchState::Running;
-    m_worker.start(
-        [this] { runBatch(m_batch); },
-        [this] { QMetaObject::invokeMethod(this, &SimulationController::finishBatch, Qt::QueuedConnection); });
-}
-
-void SimulationController::finishBatch() {
-    settle();
-    m_batchState = BatchState::None;
-    announce();
-    if (isPlaying()) tick();  // steps still owed begin now, not at the next tick
-}
-
 void SimulationController::advance(int steps) {
     settle();
-    Batch batch = beginBatch(steps, false);
-    runBatch(batch);
+    Batch batch = beginBatch();
+    for (int i = 0; i < steps; ++i) runStep(batch);
+    endBatch(batch);
     takeIn(batch);
     announce();
 }
 
-SimulationController::Batch SimulationController::beginBatch(int steps, bool played) {
+void SimulationController::startPlayedBatch() {
+    snapshot();  // up to date before the worker has the world: the views draw it meanwhile
+    m_batch = beginBatch();
+    m_batch.clock = m_clock;
+    m_batch.counted = m_counted;
+    m_batch.owed = m_accumulator;
+    m_batch.timeScale = m_timeScale;
+    m_batchState = BatchState::Running;
+    m_worker.start([this] { runPlayedBatch(m_batch); });
+}
+
+void SimulationController::finishPlayedBatch() {
+    settle();
+    m_batchState = BatchState::None;
+    announce();
+    // Unless a slot of announce()'s paused, or paused and played again (which started one).
+    if (isPlaying() && m_batchState == BatchState::None) startPlayedBatch();
+}
+
+SimulationController::Batch SimulationController::beginBatch() {
     prepareRecording();
     // Resumed from a frame shown, the samples of the steps after it were of the dropped future.
     m_series.truncateAfterStep(m_built->world.stepCount());
     Batch batch;
-    batch.steps = steps;
-    batch.played = played;
     batch.grab = m_grab;
     batch.overlays = m_snapshotOverlays;
     return batch;
 }
 
-void SimulationController::runBatch(Batch& batch) {
-    simcore::World& world = m_built->world;
-    QElapsedTimer clock;
-    clock.start();
-    for (int i = 0; i < batch.steps; ++i) {
-        const std::optional<AppliedForce> grab = grabForce(batch.grab);  // forces last one step in simcore
-        if (grab) applyForce(world, *grab);
-        world.step();
-        recordStep(grab);
-        batch.samples.push_back(RunSeries::sample(world));
-        ++batch.stepsRun;
-        if (!batch.speedLimitStep && world.lastStepProfile().counters.boundedVelocities > 0)
-            batch.speedLimitStep = world.stepCount();
-        // Played, the view gets a new state every tick even when the steps cannot keep up, and
-        // settle() waits for one step at most.
-        if (batch.played && (m_stopRequested || clock.elapsed() >= kTickMs)) break;
+void SimulationController::runPlayedBatch(Batch& batch) {
+    const simcore::World& world = m_built->world;
+    const double dt = world.settings().timeStep;
+    // Every nanosecond since Play is counted once, up to the moment the batch ends.
+    const auto countTime = [&batch] {
+        const qint64 now = batch.clock.nsecsElapsed();
+        batch.owed += static_cast<double>(now - batch.counted) * 1e-9 * batch.timeScale;
+        batch.counted = now;
+    };
+    const qint64 began = batch.clock.nsecsElapsed();
+    while (!m_worker.stopRequested()) {
+        countTime();
+        if (batch.owed >= dt) {
+            // After a stall, or when steps take longer than they simulate, the backlog beyond
+            // kMaxCatchUpSteps is dropped: slower than real time rather than a spiral.
+            batch.owed = std::min(batch.owed, kMaxCatchUpSteps * dt) - dt;
+            runStep(batch);
+            if (world.findNonFiniteBody()) break;
+            // Ended by itself between steps, the batch is taken in without a wait.
+            if (batch.clock.nsecsElapsed() - began >= kTickMs * 1'000'000LL) break;
+        } else if (!m_worker.sleepFor(std::chrono::nanoseconds(
+                       static_cast<std::int64_t>((dt - batch.owed) / batch.timeScale * 1e9)))) {
+            break;
+        }
     }
-    // Checked once per batch, not per step: enough to stop playback before garbage spreads.
-    batch.nonFinite = world.findNonFiniteBody();
-    batch.snapshot = WorldSnapshot::take(world, batch.overlays);
+    countTime();
+    endBatch(batch);
+    QMetaObject::invokeMethod(this, &SimulationController::finishPlayedBatch, Qt::QueuedConnection);
+}
+
+void SimulationController::runStep(Batch& batch) {
+    simcore::World& world = m_built->world;
+    const std::optional<AppliedForce> grab = grabForce(batch.grab);  // forces last one step in simcore
+    if (grab) applyForce(world, *grab);
+    world.step();
+    recordStep(grab);
+    batch.samples.push_back(RunSeries::sample(world));
+    ++batch.stepsRun;
+    if (!batch.speedLimitStep && world.lastStepProfile().counters.boundedVelocities > 0)
+        batch.speedLimitStep = world.stepCount();
+}
+
+void SimulationController::endBatch(Batch& batch) {
+    // Checked once per batch of stepFrames, not per step: enough to stop before garbage spreads.
+    batch.nonFinite = m_built->world.findNonFiniteBody();
+    batch.snapshot = WorldSnapshot::take(m_built->world, batch.overlays);
 }
 
 void SimulationController::takeIn(Batch& batch) {
@@ -208,11 +225,6 @@ void SimulationController::takeIn(Batch& batch) {
     for (const RunSample& sample : batch.samples) m_series.append(sample);
     m_snapshot = std::move(batch.snapshot);
     m_snapshotStale = false;
-    if (batch.played) {
-        const double dt = world.settings().timeStep;
-        m_accumulator += (batch.steps - batch.stepsRun) * dt;  // stopped early: still owed
-        m_meter.add(seconds(m_playClock), batch.stepsRun * dt);
-    }
     if (!m_boundWarned && batch.speedLimitStep) {
         m_boundWarned = true;
         m_announcement.speedLimitStep = batch.speedLimitStep;

@@ -1,10 +1,11 @@
 #pragma once
 // One thread that runs the jobs it is given, one at a time, away from the GUI thread: the
-// simulation controller steps its world here. Plain C++: a job says it is done by calling what the
-// owner passed with it (on this thread, so it only posts to the owner's thread), then wait()
-// returns. Nothing is shared with the owner but the job; the owner keeps off whatever the job
-// touches until wait() has returned.
+// simulation controller steps its world here. Plain C++. A long job polls stopRequested() (or
+// sleeps in sleepFor, which wakes early) so that its owner can end it; the owner keeps off whatever
+// the job touches until wait() has returned, and the job tells the owner's thread what it needs to
+// by posting, never by calling into it.
 
+#include <chrono>
 #include <condition_variable>
 #include <functional>
 #include <mutex>
@@ -15,15 +16,21 @@ namespace interplay {
 class WorkerThread {
 public:
     WorkerThread();
-    ~WorkerThread();  // waits for the job in flight, then ends the thread
+    ~WorkerThread();  // ends the job in flight (as stop() does), then the thread
     WorkerThread(const WorkerThread&) = delete;
     WorkerThread& operator=(const WorkerThread&) = delete;
 
-    // Runs `job` on the thread, then `done` (also on the thread), unless it is empty. The job in
-    // flight, if any, is waited for first.
-    void start(std::function<void()> job, std::function<void()> done = {});
-    // Returns once no job is in flight: the job and its `done` have returned.
+    // Runs `job` on the thread; the job in flight, if any, is waited for first.
+    void start(std::function<void()> job);
+    // Returns once no job is in flight.
     void wait();
+    // Asks the job in flight to return, and waits for it.
+    void stop();
+
+    // For the job: whether its owner asked it to return.
+    bool stopRequested();
+    // For the job: sleeps for `duration`, or less if asked to return; false if it was.
+    bool sleepFor(std::chrono::nanoseconds duration);
 
 private:
     void run();
@@ -31,7 +38,7 @@ private:
     std::mutex m_mutex;
     std::condition_variable m_changed;
     std::function<void()> m_job;  // the job in flight, empty when idle
-    std::function<void()> m_done;
+    bool m_stop = false;          // the job in flight is asked to return
     bool m_quit = false;
     std::thread m_thread;  // last: it starts once the members it uses exist
 };
