@@ -4,21 +4,21 @@
 // fixed-step accumulator; stepOnce/stepFrames advance deterministically, whatever the clock says.
 //
 // Play steps the world off the GUI thread, so a slow scene never makes the window slow, and a slow
-// window (a software renderer, a busy machine) slows the run only when a frame takes longer than
-// kMaxCatchUpSteps steps simulate: one worker thread runs a batch of steps, each when the clock owes
-// it (after a stall at most kMaxCatchUpSteps back to back, the rest of the backlog dropped), for a
-// tick (kTickMs) and at least one step. It then takes a WorldSnapshot (the bodies' poses, the
-// joints and the overlays asked for) and asks the GUI thread, by a queued call, to take it in; the
-// GUI thread announces it (stepped() and the rest) and starts the next at once. While a batch is in
-// flight the worker alone touches the world, the timeline and the recording times; the GUI thread
-// reaches them only through settle(), which every public entry that reads or changes them calls
-// first: it asks the batch to end after the step under way, waits for it and takes in what it did.
-// So an edit, a pick or a panel's read waits one step at most and never races with the worker. The
-// viewport draws snapshot() and never waits. The signals a batch causes (stepped, timelineChanged,
-// simulationWarning, simulationError) come from the event loop, never from inside settle().
-// playbackRate() says how fast the run goes against the wall clock, and whether it keeps up. A
-// step, a run and a recording are the same bits whichever thread runs them: what a step does never
-// depends on how the steps are batched.
+// window (a software renderer, a busy machine) does not slow the run: one worker thread runs a
+// batch of steps, each when the clock owes it (after a stall at most kMaxCatchUpSteps back to back,
+// the rest of the backlog dropped). After a tick (kTickMs) and at least one step it asks the GUI
+// thread, by a queued call, to take it in, and goes on while its steps are quick (a few ms), or
+// else ends there. At its end it takes a WorldSnapshot (the bodies' poses, the joints and the
+// overlays asked for); the GUI thread announces it (stepped() and the rest) and starts the next
+// batch at once. While a batch is in flight the worker alone touches the world, the timeline and
+// the recording times; the GUI thread reaches them only through settle(), which every public entry
+// that reads or changes them calls first: it asks the batch to end after the step under way, waits
+// for it and takes in what it did. So an edit, a pick or a panel's read waits one step at most and
+// never races with the worker. The viewport draws snapshot() and never waits. The signals a batch
+// causes (stepped, timelineChanged, simulationWarning, simulationError) come from the event loop,
+// never from inside settle(). playbackRate() says how fast the run goes against the wall clock,
+// and whether it keeps up. A step, a run and a recording are the same bits whichever thread runs
+// them: what a step does never depends on how the steps are batched.
 // Interaction with the running world (grabbing a body with a spring, throwing new bodies) goes
 // through simcore's public API only and is forgotten on Reset.
 //
@@ -275,8 +275,8 @@ private:
     // the next one started.
     void finishPlayedBatch();
     Batch beginBatch();
-    // On the worker: steps in real time for a tick, at least one step, or until asked to stop
-    // (or the world goes non-finite); then asks the GUI thread to take it in.
+    // On the worker: steps in real time until asked to stop after a tick (see the top of this
+    // file), or until the world goes non-finite.
     void runPlayedBatch(Batch& batch);
     // On either thread: one step, recorded. A batch's steps touch the world, the timeline and the
     // recording times.
