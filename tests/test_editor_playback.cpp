@@ -129,15 +129,16 @@ void TestEditorPlayback::clickShowsTheBodyInTheInspectorWhilePlaying() {
         document()->setSelectedBodies({});
         QTest::qWait(40);  // steps run on; one may be in flight as the click comes
         QVERIFY(simulation()->isPlaying());
-        // The highest cube: nothing stands over it in a view from above. The world, read here,
-        // waits for the step in flight, as the click's pick does.
-        const simcore::World* world = simulation()->world();
+        // The highest cube as drawn: nothing stands over it in a view from above. Read from the
+        // snapshot, which leaves the step in flight running: the click's pick waits for it.
+        const interplay::WorldSnapshot& drawn = simulation()->snapshot();
         const auto& ids = simulation()->bodyIds();
+        const auto centre = [&](int index) { return drawn.find(ids[std::size_t(index)])->transform.position; };
         int top = 1;
         for (int i = 1; i < document()->bodyCount(); ++i) {
-            if (world->position(ids[std::size_t(i)]).y > world->position(ids[std::size_t(top)]).y) top = i;
+            if (centre(i).y > centre(top).y) top = i;
         }
-        const QPoint pixel = pixelOf(*viewport(), world->position(ids[std::size_t(top)]));
+        const QPoint pixel = pixelOf(*viewport(), centre(top));
 
         QElapsedTimer clock;
         clock.start();
