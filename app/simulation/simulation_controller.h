@@ -275,13 +275,13 @@ private:
     // the next one started.
     void finishPlayedBatch();
     Batch beginBatch();
-    // On the worker: steps in real time until asked to stop after a tick (see the top of this
-    // file), or until the world goes non-finite.
+    // On the worker: steps in real time until it has run a tick of slow steps, is asked to stop
+    // (see the top of this file) or the world goes non-finite; then asks to be taken in.
     void runPlayedBatch(Batch& batch);
     // On either thread: one step, recorded. A batch's steps touch the world, the timeline and the
     // recording times.
     void runStep(Batch& batch);
-    void endBatch(Batch& batch);  // on the thread that stepped: the snapshot
+    void endBatch(Batch& batch);  // on the thread that stepped: the non-finite check, the snapshot
     void takeIn(Batch& batch);    // on the GUI thread, after the batch ended
     void announce();
     // Waits for the batch in flight, if any, after asking it to stop after the step under way, and

@@ -233,7 +233,7 @@ void SimulationController::runStep(Batch& batch) {
 }
 
 void SimulationController::endBatch(Batch& batch) {
-    // Checked once per batch of stepFrames, not per step: enough to stop before garbage spreads.
+    // Once per batch (a played one also looks after each step): enough to stop before garbage spreads.
     batch.nonFinite = m_built->world.findNonFiniteBody();
     batch.snapshot = WorldSnapshot::take(m_built->world, batch.overlays);
 }
