@@ -190,6 +190,7 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_simulation, &SimulationController::stepped, this, &MainWindow::updateStatus);
     connect(m_simulation, &SimulationController::worldRebuilt, this, &MainWindow::updateStatus);
     connect(m_simulation, &SimulationController::bodiesEdited, this, &MainWindow::updateStatus);
+    connect(m_simulation, &SimulationController::playingChanged, this, &MainWindow::updateStatus);
     connect(m_simulation, &SimulationController::simulationError, this, &MainWindow::showSimulationError);
     connect(m_simulation, &SimulationController::simulationWarning, this,
             [this](const QString& summary, const QString& details) {
@@ -502,13 +503,16 @@ void MainWindow::createHelpMenu() {
 
 void MainWindow::createStatusBar() {
     m_timeLabel = new QLabel(this);
+    m_rateLabel = new QLabel(this);
+    m_rateLabel->setObjectName(QStringLiteral("realTimeLabel"));
+    m_rateLabel->setToolTip(tr("Simulated seconds per wall-clock second over the last second of playback"));
     m_costLabel = new QLabel(this);
     m_bodiesLabel = new QLabel(this);
     m_bodiesLabel->setObjectName(QStringLiteral("awakeBodiesLabel"));
     m_bodiesLabel->setToolTip(tr("Dynamic bodies awake, of all dynamic bodies"));
     m_fpsLabel = new QLabel(this);
     // Fixed digits keep the labels from jittering while running.
-    for (QLabel* label : {m_timeLabel, m_costLabel, m_bodiesLabel, m_fpsLabel}) {
+    for (QLabel* label : {m_timeLabel, m_rateLabel, m_costLabel, m_bodiesLabel, m_fpsLabel}) {
         label->setFont(QFont(QStringLiteral("monospace")));
         label->setContentsMargins(8, 0, 8, 0);
         statusBar()->addPermanentWidget(label);
@@ -626,6 +630,13 @@ void MainWindow::updateStatus() {
         return;
     }
     m_timeLabel->setText(tr("t = %1 s").arg(world->simulatedTime(), 0, 'f', 2));
+    m_rateLabel->setVisible(m_simulation->isPlaying());
+    if (const auto rate = m_simulation->playbackRate()) {
+        const QString factor = tr("Real time ×%1").arg(rate->factor, 0, 'f', 2);
+        m_rateLabel->setText(rate->keepingUp ? factor : tr("%1 — cannot keep up").arg(factor));
+    } else {
+        m_rateLabel->setText(tr("Real time ×–"));  // measured once a quarter second has run
+    }
     m_costLabel->setText(tr("%1 ms/step").arg(world->lastStepProfile().totalMs, 0, 'f', 3));
     const SimulationController::AwakeCount bodies = m_simulation->awakeCount();
     m_bodiesLabel->setText(tr("%1 / %2 awake").arg(bodies.awake).arg(bodies.dynamic));

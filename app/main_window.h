@@ -118,6 +118,7 @@ private:
     QAction* m_playAction = nullptr;
 
     QLabel* m_timeLabel = nullptr;
+    QLabel* m_rateLabel = nullptr;  // while playing: the real-time factor
     QLabel* m_costLabel = nullptr;
     QLabel* m_bodiesLabel = nullptr;
     QLabel* m_fpsLabel = nullptr;

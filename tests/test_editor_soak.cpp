@@ -714,7 +714,7 @@ private:
     }
 
     QString checkSimulation(const std::string& documentText) {
-        const SimulationController& sim = simulation();
+        SimulationController& sim = simulation();
         const World* world = sim.world();
         if (!world) return QStringLiteral("no world");
         const Scene& scene = document().scene();

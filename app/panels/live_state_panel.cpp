@@ -119,6 +119,9 @@ void LiveStatePanel::scheduleRefresh() {
         refresh();
         return;
     }
+    // Playing, a later batch of steps refreshes it: as stepped() comes the world is free, while a
+    // timer could fire with a step in flight and wait for it.
+    if (m_simulation->isPlaying()) return;
     if (!m_refreshTimer.isActive()) m_refreshTimer.start(int(interval - m_lastRefresh.elapsed()));
 }
 

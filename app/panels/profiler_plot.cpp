@@ -338,9 +338,10 @@ void ProfilerPlot::drawCursor(QPainter& painter, const Layout& l) const {
     const QRectF& area = l.area;
 
     // The frame shown, when the timeline is scrubbed back: the samples after it go if Play resumes.
-    if (const simcore::World* world = m_simulation->world(); world && world->simulatedTime() < run.back().time) {
+    // The snapshot's time: painting never waits for a step in flight.
+    if (const double shown = m_simulation->snapshot().simulatedTime; shown < run.back().time) {
         painter.setPen(QPen(palette().highlight().color(), 1.0, Qt::DashLine));
-        const double x = l.xAt(world->simulatedTime());
+        const double x = l.xAt(shown);
         painter.drawLine(QPointF(x, area.top()), QPointF(x, area.bottom()));
     }
 

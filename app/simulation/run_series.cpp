@@ -11,7 +11,7 @@ RunSeries::RunSeries(std::size_t capacity) : m_capacity(capacity) {
     if (capacity == 0) throw std::invalid_argument("RunSeries: the capacity must be at least one sample");
 }
 
-void RunSeries::record(const simcore::World& world) {
+RunSample RunSeries::sample(const simcore::World& world) {
     const simcore::StepProfile& profile = world.lastStepProfile();
     RunSample sample;
     sample.step = world.stepCount();
@@ -22,6 +22,10 @@ void RunSeries::record(const simcore::World& world) {
     sample.jointError = world.worstJointError().position;
     sample.stageMs = profile.stageMs;
     sample.totalMs = profile.totalMs;
+    return sample;
+}
+
+void RunSeries::append(const RunSample& sample) {
     if (m_samples.size() == m_capacity) m_samples.pop_front();
     m_samples.push_back(sample);
 }

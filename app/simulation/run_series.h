@@ -41,7 +41,10 @@ public:
     explicit RunSeries(std::size_t capacity = kDefaultCapacity);
 
     // Samples `world` as its last step left it; the oldest sample goes when the ring is full.
-    void record(const simcore::World& world);
+    void record(const simcore::World& world) { append(sample(world)); }
+    // The two halves of record, for samples taken on the thread that steps and kept on another.
+    static RunSample sample(const simcore::World& world);
+    void append(const RunSample& sample);
     void clear();
     // Drops the samples of steps after `step` (a run resumed from it records a new future).
     void truncateAfterStep(std::uint64_t step);

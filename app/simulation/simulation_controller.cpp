@@ -14,32 +14,21 @@
 #include <utility>
 
 namespace interplay {
-namespace {
 
-// The grab spring: critically damped at this frequency, strong enough to lift a body against
-// gravity yet slow enough to stay stable at one force per 1/60 s step.
-constexpr float kGrabHertz = 4.0f;
-// Cap on the spring's acceleration (m/s^2), so a far-away cursor cannot fling a body through walls.
-constexpr float kMaxGrabAcceleration = 150.0f;
+SimulationController::SimulationController(QObject* parent) : QObject(parent) {}
 
-}  // namespace
-
-SimulationController::SimulationController(QObject* parent) : QObject(parent) {
-    // A tick per display frame; the accumulator, not the timer's accuracy, sets the simulated rate.
-    m_timer.setInterval(16);
-    m_timer.setTimerType(Qt::PreciseTimer);
-    connect(&m_timer, &QTimer::timeout, this, &SimulationController::tick);
+SimulationController::~SimulationController() {
+    settle();  // the worker's batch uses the members destroyed before it
 }
 
-SimulationController::~SimulationController() = default;
-
-const simcore::World* SimulationController::world() const {
+const simcore::World* SimulationController::world() {
+    settle();
     return m_built ? &m_built->world : nullptr;
 }
 
-SimulationController::AwakeCount SimulationController::awakeCount() const {
+SimulationController::AwakeCount SimulationController::awakeCount() {
     AwakeCount count;
-    if (!m_built) return count;
+    if (!world()) return count;
     const simcore::World& world = m_built->world;
     for (const simcore::BodyId id : m_bodyIds) {
         if (world.motionType(id) != simcore::MotionType::Dynamic) continue;
@@ -64,6 +53,7 @@ bool SimulationController::setScene(const simcore::Scene& scene, QString* error)
 }
 
 bool SimulationController::build(simcore::Scene scene, QString* error) {
+    settle();
     std::unique_ptr<simcore::BuiltWorld> built;
     try {
         // new T(prvalue) constructs in place, so this does not require World to be movable.
@@ -84,6 +74,8 @@ bool SimulationController::build(simcore::Scene scene, QString* error) {
     m_series.clear();
     m_boundWarned = false;
     m_rebuildBeforeRun = false;
+    m_snapshotStale = true;
+    m_announcement = {};  // of the world replaced
     discardRecording();
     emit worldRebuilt();
     return true;
@@ -108,6 +100,7 @@ void SimulationController::rebuildIfEditedBeforeRun() {
 
 bool SimulationController::insertBody(int index, const simcore::SceneBody& body, QString* error) {
     if (!m_built) return false;
+    simcore::World& world = changeWorld();
     insertSceneBody(m_scene, index, body);
     simcore::BodyCreationSettings settings = body.body;
     // The most recent removal of this very body from this place: it returns as the run left it.
@@ -121,7 +114,7 @@ bool SimulationController::insertBody(int index, const simcore::SceneBody& body,
     simcore::BodyId id;  // stays invalid if the engine refuses the body, so indices stay aligned
     bool created = true;
     try {
-        id = m_built->world.createBody(settings);
+        id = world.createBody(settings);
     } catch (const std::exception& e) {
         if (error) *error = QString::fromStdString(e.what());
         created = false;
@@ -135,8 +128,8 @@ bool SimulationController::insertBody(int index, const simcore::SceneBody& body,
 
 void SimulationController::removeBody(int index) {
     if (!m_built) return;
+    simcore::World& world = changeWorld();
     const simcore::BodyId id = m_bodyIds.at(static_cast<std::size_t>(index));
-    simcore::World& world = m_built->world;
     if (world.contains(id)) {
         const simcore::SceneBody& authored = m_scene.bodies.at(static_cast<std::size_t>(index));
         simcore::BodyCreationSettings live = authored.body;
@@ -157,6 +150,7 @@ void SimulationController::removeBody(int index) {
 
 void SimulationController::moveBody(int from, int to) {
     if (!m_built) return;
+    changeWorld();  // the bodies' order: the worker reads how many there are
     moveSceneBody(m_scene, from, to);
     moveItem(m_bodyIds, from, to);
     moveItem(m_colors, from, to);
@@ -166,8 +160,8 @@ void SimulationController::moveBody(int from, int to) {
 
 bool SimulationController::changeBody(int index, const simcore::SceneBody& body, BodyField field, QString* error) {
     if (!m_built) return false;
+    simcore::World& world = changeWorld();
     const simcore::SceneBody before = std::exchange(m_scene.bodies.at(static_cast<std::size_t>(index)), body);
-    simcore::World& world = m_built->world;
     const simcore::BodyId id = m_bodyIds[static_cast<std::size_t>(index)];
     if (field == BodyField::Color) {
         m_colors[static_cast<std::size_t>(index)] = body.color;
@@ -239,16 +233,17 @@ bool SimulationController::changeBody(int index, const simcore::SceneBody& body,
 simcore::Vec3 SimulationController::livePoint(std::size_t sceneBody, const simcore::Vec3& point) const {
     const simcore::BodyCreationSettings& authored = m_scene.bodies.at(sceneBody).body;
     const simcore::BodyId id = m_bodyIds.at(sceneBody);
-    return carriedPoint({authored.position, authored.orientation}, {world()->position(id), world()->orientation(id)}, point);
+    const simcore::World& world = m_built->world;  // the callers have settled
+    return carriedPoint({authored.position, authored.orientation}, {world.position(id), world.orientation(id)}, point);
 }
 
 simcore::Vec3 SimulationController::liveDirection(std::size_t sceneBody, const simcore::Vec3& direction) const {
-    return carriedDirection(m_scene.bodies.at(sceneBody).body.orientation, world()->orientation(m_bodyIds.at(sceneBody)),
-                            direction);
+    return carriedDirection(m_scene.bodies.at(sceneBody).body.orientation,
+                            m_built->world.orientation(m_bodyIds.at(sceneBody)), direction);
 }
 
 simcore::JointId SimulationController::createLiveJoint(const simcore::SceneJoint& joint) {
-    simcore::World& world = m_built->world;
+    simcore::World& world = m_built->world;  // the caller has settled
     simcore::JointCreationSettings settings = joint.joint;
     settings.bodyA = m_bodyIds.at(joint.bodyA);
     settings.bodyB = joint.bodyB ? m_bodyIds.at(*joint.bodyB) : simcore::BodyId{};
@@ -262,6 +257,7 @@ simcore::JointId SimulationController::createLiveJoint(const simcore::SceneJoint
 
 bool SimulationController::insertJoint(int index, const simcore::SceneJoint& joint, QString* error) {
     if (!m_built) return false;
+    changeWorld();
     m_scene.joints.insert(m_scene.joints.begin() + index, joint);
     simcore::JointId id;  // stays invalid if the engine refuses the joint, so indices stay aligned
     bool created = true;
@@ -279,8 +275,9 @@ bool SimulationController::insertJoint(int index, const simcore::SceneJoint& joi
 
 void SimulationController::removeJoint(int index) {
     if (!m_built) return;
+    simcore::World& world = changeWorld();
     const simcore::JointId id = m_jointIds.at(static_cast<std::size_t>(index));
-    if (m_built->world.contains(id)) m_built->world.destroyJoint(id);
+    if (world.contains(id)) world.destroyJoint(id);
     m_jointIds.erase(m_jointIds.begin() + index);
     m_scene.joints.erase(m_scene.joints.begin() + index);
     editedInPlace();
@@ -289,10 +286,10 @@ void SimulationController::removeJoint(int index) {
 
 bool SimulationController::changeJoint(int index, const simcore::SceneJoint& joint, JointField field, QString* error) {
     if (!m_built) return false;
+    simcore::World& world = changeWorld();
     const auto i = static_cast<std::size_t>(index);
     m_scene.joints.at(i) = joint;
     if (field == JointField::Placement) return true;
-    simcore::World& world = m_built->world;
     const simcore::JointCreationSettings& j = joint.joint;
     try {
         if (!world.contains(m_jointIds[i])) throw std::invalid_argument("the joint is not in the running world");
@@ -326,7 +323,7 @@ bool SimulationController::changeJoint(int index, const simcore::SceneJoint& joi
 bool SimulationController::applySettings(const simcore::WorldSettings& settings, QString* error) {
     if (!m_built) return false;
     try {
-        m_built->world.setSettings(settings);
+        changeWorld().setSettings(settings);
     } catch (const std::exception& e) {
         if (error) *error = QString::fromStdString(e.what());
         return false;
@@ -336,91 +333,13 @@ bool SimulationController::applySettings(const simcore::WorldSettings& settings,
     return true;
 }
 
-void SimulationController::play() {
-    if (!m_built || isPlaying()) return;
-    rebuildIfEditedBeforeRun();
-    m_accumulator = 0.0;
-    m_clock.start();
-    m_timer.start();
-    emit playingChanged(true);
-}
-
-void SimulationController::pause() {
-    if (!isPlaying()) return;
-    m_timer.stop();
-    emit playingChanged(false);
-}
-
-void SimulationController::setPlaying(bool playing) {
-    playing ? play() : pause();
-}
-
-void SimulationController::togglePlaying() {
-    setPlaying(!isPlaying());
-}
-
-void SimulationController::stepOnce() {
-    pause();
-    const int frame = currentFrame();
-    if (frame >= 0 && frame + 1 < static_cast<int>(m_timeline.frameCount())) {
-        showFrame(frame + 1);
-        return;
-    }
-    stepFrames(1);
-}
-
-void SimulationController::stepBack() {
-    pause();
-    const int frame = currentFrame();
-    if (frame > 0) showFrame(frame - 1);
-}
-
-void SimulationController::stepFrames(int frames) {
-    if (!m_built || frames <= 0) return;
-    rebuildIfEditedBeforeRun();
-    advance(frames);
-    emit stepped();
-}
-
-void SimulationController::reset() {
-    QString error;
-    // The authored scene built once already, so this only fails if the engine changed under us.
-    if (!setScene(m_scene, &error)) emit simulationError(error);
-}
-
-void SimulationController::setTimeScale(double scale) {
-    scale = std::clamp(scale, kMinTimeScale, kMaxTimeScale);
-    if (scale == m_timeScale) return;
-    m_timeScale = scale;
-    emit timeScaleChanged(m_timeScale);
-}
-
-void SimulationController::beginGrab(simcore::BodyId body, const simcore::Vec3& localPoint,
-                                     const simcore::Vec3& target) {
-    m_grab = Grab{body, localPoint, target};
-}
-
-void SimulationController::moveGrab(const simcore::Vec3& target) {
-    if (m_grab) m_grab->target = target;
-}
-
-void SimulationController::endGrab() {
-    m_grab.reset();
-}
-
-std::optional<std::pair<simcore::Vec3, simcore::Vec3>> SimulationController::grabLine() const {
-    if (!m_grab || !m_built || !m_built->world.contains(m_grab->body)) return std::nullopt;
-    const simcore::World& world = m_built->world;
-    const simcore::Vec3 point = world.position(m_grab->body) + world.orientation(m_grab->body) * m_grab->localPoint;
-    return std::make_pair(point, m_grab->target);
-}
-
 simcore::BodyId SimulationController::spawn(const simcore::SceneBody& body, QString* error) {
     if (!m_built) return {};
     rebuildIfEditedBeforeRun();  // the thrown body joins the world that will run
+    simcore::World& world = changeWorld();
     simcore::BodyId id;
     try {
-        id = m_built->world.createBody(body.body);
+        id = world.createBody(body.body);
     } catch (const std::exception& e) {
         if (error) *error = QString::fromStdString(e.what());
         return {};
@@ -435,151 +354,6 @@ simcore::BodyId SimulationController::spawn(const simcore::SceneBody& body, QStr
     emit bodySpawned(id);
     emit timelineChanged();
     return id;
-}
-
-std::optional<AppliedForce> SimulationController::grabForce() const {
-    const simcore::World& world = m_built->world;
-    if (!m_grab || !world.contains(m_grab->body)) return std::nullopt;
-    if (world.motionType(m_grab->body) != simcore::MotionType::Dynamic) return std::nullopt;
-    const simcore::BodyId id = m_grab->body;
-    const simcore::Vec3 center = world.centerOfMass(id);
-    const simcore::Vec3 point = world.position(id) + world.orientation(id) * m_grab->localPoint;
-    const simcore::Vec3 lever = point - center;
-    const simcore::Vec3 pointVelocity = world.linearVelocity(id) + glm::cross(world.angularVelocity(id), lever);
-    const float omega = 2.0f * 3.14159265f * kGrabHertz;
-    // Acceleration of a critically damped spring, capped; as a force it scales with the mass, so
-    // every body follows the cursor alike.
-    simcore::Vec3 acceleration = omega * omega * (m_grab->target - point) - 2.0f * omega * pointVelocity;
-    const float magnitude = glm::length(acceleration);
-    if (magnitude > kMaxGrabAcceleration) acceleration *= kMaxGrabAcceleration / magnitude;
-    const simcore::Vec3 force = world.mass(id) * acceleration;
-    return AppliedForce{id, force, glm::cross(lever, force)};
-}
-
-void SimulationController::tick() {
-    if (!m_built) return;
-    const double dt = m_built->world.settings().timeStep;
-    if (!(dt > 0.0)) return;  // the world validates this; never loop on a zero step
-    m_accumulator += static_cast<double>(m_clock.nsecsElapsed()) * 1e-9 * m_timeScale;
-    m_clock.restart();
-    int steps = static_cast<int>(m_accumulator / dt);
-    if (steps > kMaxCatchUpSteps) {
-        steps = kMaxCatchUpSteps;
-        m_accumulator = 0.0;  // drop the backlog: run slower than real time rather than stall
-    } else {
-        m_accumulator -= steps * dt;
-    }
-    if (steps == 0) return;
-    advance(steps);
-    emit stepped();
-}
-
-bool SimulationController::advance(int steps) {
-    simcore::World& world = m_built->world;
-    prepareRecording();
-    // Resumed from a frame shown, the samples of the steps after it were of the dropped future.
-    m_series.truncateAfterStep(world.stepCount());
-    for (int i = 0; i < steps; ++i) {
-        const std::optional<AppliedForce> grab = grabForce();  // forces last one step in simcore
-        if (grab) applyForce(world, *grab);
-        world.step();
-        recordStep(grab);
-        m_series.record(world);
-        if (!m_boundWarned && world.lastStepProfile().counters.boundedVelocities > 0) {
-            m_boundWarned = true;
-            emit simulationWarning(
-                tr("Step %1: a body reached the speed limit; the motion is no longer physical").arg(world.stepCount()),
-                tr("The engine bounds every body to 100 km/s and a quarter turn per substep. Unstable assemblies "
-                   "(a joint torn far apart, a violent overlap) get there; more substeps or a smaller time step help."));
-        }
-    }
-    if (m_recording) emit timelineChanged();
-    // Checked once per batch, not per step: enough to stop playback before garbage spreads.
-    if (const auto bad = world.findNonFiniteBody()) {
-        pause();
-        emit simulationError(tr("The simulation produced a non-finite %1 for body \"%2\" by step %3; playback stopped.")
-                                 .arg(QString::fromStdString(bad->quantity), QString::fromStdString(bad->name))
-                                 .arg(world.stepCount()));
-        return false;
-    }
-    return true;
-}
-
-void SimulationController::setRecording(bool recording) {
-    if (recording == m_recording) return;
-    m_recording = recording;
-    discardRecording();
-}
-
-void SimulationController::setRecordingMemoryLimit(std::size_t bytes) {
-    m_timeline.setMemoryLimit(bytes);
-    emit timelineChanged();
-}
-
-int SimulationController::currentFrame() const {
-    // Frames are consecutive steps, and the world is always at one of them while any is recorded:
-    // whatever changes it otherwise discards or cuts the recording.
-    if (!m_built || m_timeline.empty()) return -1;
-    const std::uint64_t step = m_built->world.stepCount();
-    const std::uint64_t first = m_timeline.stepOf(0);
-    if (step < first || step - first >= m_timeline.frameCount()) return -1;
-    return static_cast<int>(step - first);
-}
-
-bool SimulationController::showFrame(int frame) {
-    if (!m_built || frame < 0 || frame >= static_cast<int>(m_timeline.frameCount())) return false;
-    pause();
-    const std::size_t bodiesBefore = m_built->world.bodyCount();
-    m_built->world = m_timeline.restore(static_cast<std::size_t>(frame));
-    m_grab.reset();
-    m_changedSinceFrame = false;
-    // Bodies thrown in later keep their ids (a later frame has them again); views skip them here.
-    if (m_built->world.bodyCount() != bodiesBefore) emit bodiesEdited();
-    emit stepped();
-    emit timelineChanged();
-    return true;
-}
-
-double SimulationController::recordingMs() const {
-    if (m_recordingMs.empty()) return 0.0;
-    double sum = 0.0;
-    for (double ms : m_recordingMs) sum += ms;
-    return sum / static_cast<double>(m_recordingMs.size());
-}
-
-void SimulationController::prepareRecording() {
-    if (!m_recording) return;
-    const int frame = currentFrame();
-    if (frame < 0) {
-        m_timeline.clear();
-        m_timeline.record(m_built->world, std::nullopt, true, m_bodyIds.size());
-        return;
-    }
-    if (frame + 1 == static_cast<int>(m_timeline.frameCount())) return;
-    // Resuming from a frame shown: the future recorded after it is dropped, and so are the ids of
-    // the bodies thrown in there (a new throw may reuse their slots).
-    m_timeline.truncateAfter(static_cast<std::size_t>(frame));
-    const std::size_t tracked = m_timeline.trackedBodiesOf(static_cast<std::size_t>(frame));
-    if (tracked < m_bodyIds.size()) {
-        m_bodyIds.resize(tracked);
-        m_colors.resize(tracked);
-        emit bodiesEdited();
-    }
-}
-
-void SimulationController::recordStep(const std::optional<AppliedForce>& input) {
-    if (!m_recording) return;
-    QElapsedTimer timer;
-    timer.start();
-    m_timeline.record(m_built->world, input, std::exchange(m_changedSinceFrame, false), m_bodyIds.size());
-    m_recordingMs.push_back(static_cast<double>(timer.nsecsElapsed()) * 1e-6);
-    if (m_recordingMs.size() > kRecordingMsSteps) m_recordingMs.pop_front();
-}
-
-void SimulationController::discardRecording() {
-    m_timeline.clear();
-    m_changedSinceFrame = false;
-    emit timelineChanged();
 }
 
 void SimulationController::followDocument(const SceneDocument* document) {
@@ -611,6 +385,7 @@ void SimulationController::followDocument(const SceneDocument* document) {
 }
 
 void SimulationController::follow(const SceneDocument* document, const std::function<bool(QString* error)>& edit) {
+    settle();
     discardRecording();  // the frames were of the scene before the edit
     QString error;
     if (edit(&error)) return;
@@ -619,7 +394,7 @@ void SimulationController::follow(const SceneDocument* document, const std::func
         emit editFailed(tr("The edited scene cannot be simulated: %1").arg(rebuildError));
 }
 
-QUndoCommand* SimulationController::simulatedPoseCommand(SceneDocument* document, QString* error) const {
+QUndoCommand* SimulationController::simulatedPoseCommand(SceneDocument* document, QString* error) {
     const simcore::World* live = world();
     QList<int> indices;
     std::vector<simcore::SceneBody> bodies;

@@ -1,7 +1,24 @@
 #pragma once
 // Owns the running world. Play runs a copy of the authored scene; Reset rebuilds it from that scene,
-// so the simulation never changes what the document holds. A timer drives real-time playback with
-// a fixed-step accumulator; stepOnce/stepFrames advance deterministically, whatever the clock says.
+// so the simulation never changes what the document holds. Play runs in real time with a
+// fixed-step accumulator; stepOnce/stepFrames advance deterministically, whatever the clock says.
+//
+// Play steps the world off the GUI thread, so a slow scene never makes the window slow, and a slow
+// window (a software renderer, a busy machine) does not slow the run: one worker thread runs a
+// batch of steps, each when the clock owes it (after a stall at most kMaxCatchUpSteps back to back,
+// the rest of the backlog dropped). After a tick (kTickMs) and at least one step it asks the GUI
+// thread, by a queued call, to take it in, and goes on while its steps are quick (a few ms), or
+// else ends there. At its end it takes a WorldSnapshot (the bodies' poses, the joints and the
+// overlays asked for); the GUI thread announces it (stepped() and the rest) and starts the next
+// batch at once. While a batch is in flight the worker alone touches the world, the timeline and
+// the recording times; the GUI thread reaches them only through settle(), which every public entry
+// that reads or changes them calls first: it asks the batch to end after the step under way, waits
+// for it and takes in what it did. So an edit, a pick or a panel's read waits one step at most and
+// never races with the worker. The viewport draws snapshot() and never waits. The signals a batch
+// causes (stepped, timelineChanged, simulationWarning, simulationError) come from the event loop,
+// never from inside settle(). playbackRate() says how fast the run goes against the wall clock,
+// and whether it keeps up. A step, a run and a recording are the same bits whichever thread runs
+// them: what a step does never depends on how the steps are batched.
 // Interaction with the running world (grabbing a body with a spring, throwing new bodies) goes
 // through simcore's public API only and is forgotten on Reset.
 //
@@ -36,8 +53,11 @@
 // Reset and a new scene discard the recording: its frames were of another scene.
 
 #include "app/document/scene_document.h"
+#include "app/simulation/real_time_meter.h"
 #include "app/simulation/run_series.h"
 #include "app/simulation/timeline.h"
+#include "app/simulation/worker_thread.h"
+#include "app/simulation/world_snapshot.h"
 
 #include "simcore/io/scene.h"
 #include "simcore/world/profiler.h"
@@ -45,7 +65,6 @@
 #include <QElapsedTimer>
 #include <QObject>
 #include <QString>
-#include <QTimer>
 
 class QUndoCommand;
 
@@ -74,8 +93,10 @@ public:
     // the scene Reset returns to. Returns false with the engine's reason if it rejects them.
     bool applySettings(const simcore::WorldSettings& settings, QString* error = nullptr);
 
-    // The running world, or null before the first successful setScene.
-    const simcore::World* world() const;
+    // The running world, or null before the first successful setScene. Waits for the step in
+    // flight (see the top of this file); the world is the GUI thread's until control returns to the
+    // event loop.
+    const simcore::World* world();
     // bodyIds()[i] is the world body made from scene body i; bodies thrown in while running follow.
     const std::vector<simcore::BodyId>& bodyIds() const { return m_bodyIds; }
     // jointIds()[i] is the world joint made from scene joint i.
@@ -91,9 +112,26 @@ public:
         int awake = 0;
         int dynamic = 0;
     };
-    AwakeCount awakeCount() const;
+    AwakeCount awakeCount();
 
-    bool isPlaying() const { return m_timer.isActive(); }
+    // The world as the views draw it: as the last batch of steps left it while one is in flight,
+    // else as it is. Never waits; valid until control returns to the event loop.
+    const WorldSnapshot& snapshot();
+    // Which bounds and contact points the snapshot holds besides the bodies and joints (what the
+    // viewport's overlays draw); the rest of `overlays` is ignored.
+    void setSnapshotOverlays(const simcore::DebugDrawOptions& overlays);
+
+    // How fast playback runs: simulated seconds per wall second over about the last second, and
+    // whether that is the time scale asked for (at least kKeepingUpFraction of it). None while
+    // paused or before a quarter second of playback is measured.
+    struct PlaybackRate {
+        double factor = 0.0;
+        bool keepingUp = true;
+    };
+    std::optional<PlaybackRate> playbackRate() const;
+    static constexpr double kKeepingUpFraction = 0.9;
+
+    bool isPlaying() const { return m_playing; }
     // Simulated seconds per real second during playback (slow motion below 1).
     double timeScale() const { return m_timeScale; }
     static constexpr double kMinTimeScale = 0.05;
@@ -105,8 +143,9 @@ public:
     void moveGrab(const simcore::Vec3& target);
     void endGrab();
     bool isGrabbing() const { return m_grab.has_value(); }
-    // The grabbed point in world space and its target, for drawing the spring.
-    std::optional<std::pair<simcore::Vec3, simcore::Vec3>> grabLine() const;
+    // The grabbed point in world space (as snapshot() has the body) and its target, for drawing the
+    // spring. A grab changes no state a step reads until the next batch of steps begins.
+    std::optional<std::pair<simcore::Vec3, simcore::Vec3>> grabLine();
 
     // ---- Edits of the authored scene, applied in place (see the top of this file) ----
     // Each mirrors the SceneDocument edit of the same name, with the document's new value. On
@@ -135,7 +174,7 @@ public:
     // count from it, and a distance joint's rest length is its length there. Null, with
     // *error saying why, when there is nothing to apply or the live state is one the scene file
     // cannot hold (a speed beyond the loader's limits, a non-finite value).
-    QUndoCommand* simulatedPoseCommand(SceneDocument* document, QString* error) const;
+    QUndoCommand* simulatedPoseCommand(SceneDocument* document, QString* error);
 
     // Adds a body to the running world only (not to the document); Reset removes it again.
     // Returns an invalid id, with the reason in *error, if the engine rejects it.
@@ -145,25 +184,28 @@ public:
     // built, and cut after the step a run resumes from, as the timeline is.
     const RunSeries& series() const { return m_series; }
 
-    // ---- The timeline (see the top of this file) ----
-    const Timeline& timeline() const { return m_timeline; }
+    // ---- The timeline (see the top of this file; these wait for the step in flight) ----
+    const Timeline& timeline();
     bool isRecording() const { return m_recording; }
     void setRecording(bool recording);  // off discards the recording
     void setRecordingMemoryLimit(std::size_t bytes);
     // The recorded frame the world is at, or -1 (nothing recorded).
-    int currentFrame() const;
+    int currentFrame();
     // Puts the world back at recorded frame `frame`, paused. False when it is not recorded.
     bool showFrame(int frame);
     // Mean time a step's recording took over the last kRecordingMsSteps recorded steps (ms).
-    double recordingMs() const;
+    double recordingMs();
     static constexpr std::size_t kRecordingMsSteps = 600;
 
-    // Real-time catch-up limit: after a stall (debugger, slow frame) at most this many steps run
-    // per tick and the rest of the backlog is dropped, so the loop never spirals.
+    // Real-time catch-up limit: after a stall (debugger, a step slower than real time) at most this
+    // many steps run back to back and the rest of the backlog is dropped, so the loop never spirals.
     static constexpr int kMaxCatchUpSteps = 8;
+    // The tick (ms): one per display frame. A played batch is taken in at most once a tick.
+    static constexpr int kTickMs = 16;
 
 public slots:
     void play();
+    // Ends the batch in flight after its step under way and announces it: nothing comes after.
     void pause();
     void setPlaying(bool playing);
     void togglePlaying();
@@ -200,10 +242,55 @@ private:
         simcore::Vec3 target{0.0f};
     };
 
-    void tick();
-    bool advance(int steps);  // false when the world went non-finite
-    // The grab spring's force for the next step, if a body is grabbed.
-    std::optional<AppliedForce> grabForce() const;
+    // Steps run together, on the worker while playing or at once by stepFrames, and what they did.
+    struct Batch {
+        std::optional<Grab> grab;            // as it was when the batch began
+        simcore::DebugDrawOptions overlays;  // for the snapshot
+        // Played: the clock since Play, how much of it (ns) `owed` counts, and the rate asked for.
+        QElapsedTimer clock;
+        qint64 counted = 0;
+        double owed = 0.0;  // s of simulated time due and not yet run
+        double timeScale = 1.0;
+        // What it did.
+        int stepsRun = 0;
+        std::vector<RunSample> samples;
+        std::optional<std::uint64_t> speedLimitStep;      // the first step that bounded a velocity
+        std::optional<simcore::NonFiniteBody> nonFinite;  // found after the last step
+        WorldSnapshot snapshot;
+    };
+    // What the GUI thread is to announce of the batches taken in, in this order.
+    struct Announcement {
+        std::optional<std::uint64_t> speedLimitStep;
+        bool timelineChanged = false;
+        QString error;  // playback stops
+        bool stepped = false;
+    };
+    enum class BatchState { None, Running, Settled };  // Settled: taken in, not yet announced
+
+    // Runs `steps` at once on this thread and announces them.
+    void advance(int steps);
+    // Starts Play's next batch on the worker.
+    void startPlayedBatch();
+    // The played batch asked to be taken in (a queued call from the worker): ended, announced, and
+    // the next one started.
+    void finishPlayedBatch();
+    Batch beginBatch();
+    // On the worker: steps in real time until it has run a tick of slow steps, is asked to stop
+    // (see the top of this file) or the world goes non-finite; then asks to be taken in.
+    void runPlayedBatch(Batch& batch);
+    // On either thread: one step, recorded. A batch's steps touch the world, the timeline and the
+    // recording times.
+    void runStep(Batch& batch);
+    void endBatch(Batch& batch);  // on the thread that stepped: the non-finite check, the snapshot
+    void takeIn(Batch& batch);    // on the GUI thread, after the batch ended
+    void announce();
+    // Waits for the batch in flight, if any, after asking it to stop after the step under way, and
+    // takes in what it did. After it the GUI thread has the world until it returns to the event loop.
+    void settle();
+    // settle(), and the snapshot is taken again when next asked for: the caller changes the world.
+    simcore::World& changeWorld();
+    // The grab spring's force for the next step, if `grab` holds a body.
+    std::optional<AppliedForce> grabForce(const std::optional<Grab>& grab) const;
     // Records the world's state after a step that `input` acted over (nothing while not recording);
     // at a frame shown before the newest, first drops the frames after it.
     void recordStep(const std::optional<AppliedForce>& input);
@@ -244,10 +331,20 @@ private:
     bool m_changedSinceFrame = false;  // the world was changed between steps since the last frame
     std::deque<double> m_recordingMs;  // the last steps' recording times
 
-    QTimer m_timer;
-    QElapsedTimer m_clock;
-    double m_accumulator = 0.0;  // s of simulated time not yet run
+    bool m_playing = false;
+    QElapsedTimer m_clock;       // since Play
+    qint64 m_counted = 0;        // ns of m_clock counted into m_accumulator
+    double m_accumulator = 0.0;  // s of simulated time due and not yet run, between batches
     double m_timeScale = 1.0;
+    RealTimeMeter m_meter;
+
+    WorldSnapshot m_snapshot;
+    bool m_snapshotStale = true;  // the world changed since m_snapshot; never while a batch is in flight
+    simcore::DebugDrawOptions m_snapshotOverlays;
+    Batch m_batch;  // the worker's while m_batchState is Running
+    BatchState m_batchState = BatchState::None;
+    Announcement m_announcement;
+    WorkerThread m_worker;  // last: destroyed first, once nothing is in flight
 };
 
 }  // namespace interplay

@@ -37,8 +37,7 @@ void BodyBatches::clear() {
     m_drawOfSlot.clear();
 }
 
-void BodyBatches::rebuild(const SimulationController& simulation,
-                          const std::function<int(const simcore::Shape&)>& meshFor) {
+void BodyBatches::rebuild(SimulationController& simulation, const std::function<int(const simcore::Shape&)>& meshFor) {
     clear();
     const simcore::World* world = simulation.world();
     if (!world) return;
@@ -85,7 +84,7 @@ void BodyBatches::beginFrame(std::size_t meshCount, const QList<int>& selectedBo
     m_tintSleeping = tintSleeping;
 }
 
-void BodyBatches::drawBody(const simcore::DebugBody& body) {
+void BodyBatches::drawBody(const WorldSnapshot::Body& body) {
     const BodyDraw* draw = drawOf(body.id);
     if (!draw) return;
     const glm::mat4 bodyModel = modelMatrix(body.transform);

@@ -1,13 +1,13 @@
 #pragma once
 // The bodies of the running world as the renderer draws them: each body's mesh and colour, chosen
-// when the world is (re)built, and each frame the instances gathered from World::draw's body
-// callbacks, batched by mesh, with the selected bodies to outline. A compound is drawn child by
+// when the world is (re)built, and each frame the instances gathered from the controller's
+// snapshot of the bodies (what World::draw emitted when it was taken), batched by mesh, with the
+// selected bodies to outline. A compound is drawn child by
 // child, each with its convex shape's mesh placed by the child's pose: the same look, and equal
 // children of many compounds share one mesh.
 
+#include "app/simulation/world_snapshot.h"
 #include "app/viewport/renderer.h"
-
-#include "simcore/world/debug_draw.h"
 
 #include <QList>
 
@@ -19,17 +19,17 @@ namespace interplay {
 
 class SimulationController;
 
-class BodyBatches : public simcore::DebugDraw {
+class BodyBatches {
 public:
     // What each body of the controller's world is drawn with; `meshFor` uploads a shape's mesh.
-    void rebuild(const SimulationController& simulation, const std::function<int(const simcore::Shape&)>& meshFor);
+    void rebuild(SimulationController& simulation, const std::function<int(const simcore::Shape&)>& meshFor);
     void clear();
     bool empty() const { return m_draws.empty(); }
 
     // Starts a frame: the instances of the last one are dropped. `selectedBodies` are scene
     // indices; sleeping dynamic bodies are tinted when `tintSleeping`.
     void beginFrame(std::size_t meshCount, const QList<int>& selectedBodies, bool tintSleeping);
-    void drawBody(const simcore::DebugBody& body) override;
+    void drawBody(const WorldSnapshot::Body& body);
 
     const std::vector<std::vector<BodyInstance>>& instancesByMesh() const { return m_instancesByMesh; }
     const std::vector<OutlinedBody>& outlined() const { return m_outlined; }

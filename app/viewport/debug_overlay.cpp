@@ -56,11 +56,11 @@ DebugOverlay::DebugOverlay(const DebugDrawOptions* options, const std::vector<si
       m_contactNormals(options && options->contactNormals()),
       m_joints(jointIds) {}
 
-simcore::DebugDrawOptions DebugOverlay::worldOptions() const {
-    simcore::DebugDrawOptions options = SceneJoints::jointsOnly();
-    options.tightBounds = m_bounds;
-    options.contacts = m_contactPoints || m_contactNormals;
-    return options;
+simcore::DebugDrawOptions DebugOverlay::worldOptions(const DebugDrawOptions* options) {
+    simcore::DebugDrawOptions world = SceneJoints::jointsOnly();
+    world.tightBounds = options && options->aabbs();
+    world.contacts = options && (options->contactPoints() || options->contactNormals());
+    return world;
 }
 
 void DebugOverlay::addLine(const glm::vec3& a, const glm::vec3& b, const glm::vec3& color) {

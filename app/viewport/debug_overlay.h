@@ -48,8 +48,8 @@ public:
     // `options` may be null (overlays off, the joints still drawn).
     DebugOverlay(const DebugDrawOptions* options, const std::vector<simcore::JointId>& jointIds);
 
-    // What World::draw must emit for this overlay.
-    simcore::DebugDrawOptions worldOptions() const;
+    // What World::draw (or a snapshot of it) must emit for an overlay with these `options`.
+    static simcore::DebugDrawOptions worldOptions(const DebugDrawOptions* options);
 
     void drawBounds(simcore::BodyId body, const simcore::Aabb& box, simcore::DebugBoundsKind kind) override;
     void drawContactPoint(const simcore::DebugContactPoint& point) override;

@@ -50,20 +50,21 @@ void GizmoTool::setSpace(gizmo::Space space) {
 }
 
 std::optional<gizmo::Placement> GizmoTool::placement() const {
-    const simcore::World* world = m_simulation ? m_simulation->world() : nullptr;
-    if (!m_mode || !m_document || !world) return std::nullopt;
-    // At the bodies as they are drawn: their live poses, which a run moves away from the authored.
+    if (!m_mode || !m_document || !m_simulation) return std::nullopt;
+    // At the bodies as they are drawn (the snapshot): their live poses, which a run moves away
+    // from the authored.
+    const WorldSnapshot& snapshot = m_simulation->snapshot();
     const auto& ids = m_simulation->bodyIds();
     glm::vec3 sum(0.0f);
     int count = 0;
     glm::quat activeOrientation(1.0f, 0.0f, 0.0f, 0.0f);
     for (int index : m_document->selectedBodies()) {
         if (index < 0 || index >= static_cast<int>(ids.size())) continue;
-        const simcore::BodyId id = ids[static_cast<std::size_t>(index)];
-        if (!world->contains(id)) continue;
-        sum += world->position(id);
+        const WorldSnapshot::Body* body = snapshot.find(ids[static_cast<std::size_t>(index)]);
+        if (!body) continue;
+        sum += body->transform.position;
         ++count;
-        activeOrientation = world->orientation(id);
+        activeOrientation = body->transform.rotation;
     }
     if (count == 0) return std::nullopt;
     const glm::mat3 axes = m_space == gizmo::Space::Local ? glm::mat3_cast(activeOrientation) : glm::mat3(1.0f);

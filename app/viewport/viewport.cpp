@@ -60,7 +60,7 @@ void Viewport::setSimulation(SimulationController* simulation) {
         // A moved body is drawn from its live pose: the batches still hold.
         connect(m_simulation, &SimulationController::posesEdited, this, qOverload<>(&QWidget::update));
     }
-    update();
+    overlaysChanged();
 }
 
 void Viewport::setDocument(SceneDocument* document) {
@@ -74,9 +74,12 @@ void Viewport::setDocument(SceneDocument* document) {
 void Viewport::setDebugDrawOptions(DebugDrawOptions* options) {
     if (m_debugDraw) disconnect(m_debugDraw, nullptr, this, nullptr);
     m_debugDraw = options;
-    if (m_debugDraw) {
-        connect(m_debugDraw, &DebugDrawOptions::changed, this, qOverload<>(&QWidget::update));
-    }
+    if (m_debugDraw) connect(m_debugDraw, &DebugDrawOptions::changed, this, &Viewport::overlaysChanged);
+    overlaysChanged();
+}
+
+void Viewport::overlaysChanged() {
+    if (m_simulation) m_simulation->setSnapshotOverlays(DebugOverlay::worldOptions(m_debugDraw));
     update();
 }
 
@@ -170,10 +173,10 @@ int Viewport::sceneBodyAt(const QPointF& pixel) const {
 }
 
 std::optional<Viewport::JointPick> Viewport::pickJoint(const QPointF& pixel) const {
-    const simcore::World* world = m_simulation ? m_simulation->world() : nullptr;
-    if (!world) return std::nullopt;
+    if (!m_simulation) return std::nullopt;
+    // Where the joints are drawn: the snapshot's.
     SceneJoints joints(m_simulation->jointIds());
-    world->draw(joints, SceneJoints::jointsOnly());
+    m_simulation->snapshot().drawOverlays(joints, SceneJoints::jointsOnly());
     const float w = static_cast<float>(width()), h = static_cast<float>(height());
     const glm::vec2 cursor(static_cast<float>(pixel.x()), static_cast<float>(pixel.y()));
     std::optional<JointPick> nearest;
@@ -296,7 +299,6 @@ void Viewport::applyPendingFrame() {
 
 void Viewport::paintGL() {
     if (!m_renderer.isReady()) return;
-    const simcore::World* world = m_simulation ? m_simulation->world() : nullptr;
     if (m_bodiesDirty) {
         m_renderer.trimMeshCache();
         m_bodiesDirty = false;
@@ -308,15 +310,17 @@ void Viewport::paintGL() {
     }
     applyPendingFrame();
 
-    // Everything drawn comes from World::draw: the bodies' instances, then the overlay's lines.
+    // Everything drawn comes from the controller's snapshot, the last finished state (a step in
+    // flight is never waited for): the bodies' instances, then the overlay's lines.
     static const QList<int> kNothingSelected;
     const QList<int>& selectedBodies = m_document ? m_document->selectedBodies() : kNothingSelected;
     m_bodies.beginFrame(m_renderer.meshCount(), selectedBodies, !m_debugDraw || m_debugDraw->sleepingTint());
     std::vector<OverlayVertex> lines;
-    if (world && !m_bodies.empty()) {
-        world->draw(m_bodies, simcore::DebugDrawOptions{});
+    if (m_simulation && !m_bodies.empty()) {
+        const WorldSnapshot& snapshot = m_simulation->snapshot();
+        for (const WorldSnapshot::Body& body : snapshot.bodies) m_bodies.drawBody(body);
         DebugOverlay overlay(m_debugDraw, m_simulation->jointIds());
-        world->draw(overlay, overlay.worldOptions());
+        snapshot.drawOverlays(overlay, DebugOverlay::worldOptions(m_debugDraw));
         lines = overlay.finish(m_document ? m_document->selectedJoints() : kNothingSelected, m_simulation->grabLine());
     }
     std::vector<OverlayVertex> gizmo;

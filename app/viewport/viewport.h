@@ -3,7 +3,9 @@
 // seen through an orbit camera. Draws the document's selection outlined (selected joints in the
 // selection colour, anchors and axis marked), sleeping bodies tinted and the debug overlays
 // (bounds, contact points and normals). The widget wires three parts together: everything it
-// draws comes from World::draw (BodyBatches gathers the bodies, DebugOverlay the lines), the
+// draws comes from the controller's WorldSnapshot, what World::draw emitted when the last batch of
+// steps finished, so drawing never waits for a step in flight (BodyBatches gathers the bodies,
+// DebugOverlay the lines; picking asks the world itself, after the step in flight), the
 // Renderer draws it, and the SelectionTool handles mouse and keys (see selection_tool.h for the
 // gestures, gizmo_tool.h for the transform gizmo, which gizmo_overlay draws). GL resources live as
 // long as the widget's context (released on aboutToBeDestroyed, as in Qt's hellogl2 example).
@@ -125,6 +127,8 @@ protected:
 
 private:
     void cleanup();
+    // The debug draw options changed: the snapshot takes what the overlay draws, and the view redraws.
+    void overlaysChanged();
     void applyPendingFrame();
     float aspect() const { return static_cast<float>(width()) / static_cast<float>(std::max(height(), 1)); }
 
