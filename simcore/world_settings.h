@@ -127,8 +127,9 @@ struct WorldSettings {
     float timeStep = 1.0f / 60.0f;     // s, one call to World::step
     int substeps = 4;                  // the step is split into this many equal substeps
     // Threads the step's data-parallel stages run on, the caller's included; 0: one per core.
-    // Results are the same bits for any count. 1 (no worker threads) by default: 2 were no faster
-    // on the benchmark scenes on a 2-core machine (bench/results/README.md, "Threads"). Only the
+    // Results are the same bits for any count. 1 (no worker threads) by default: on a 2-core machine
+    // 2 threads gain 1.6-1.8x on pyramid20 but little or nothing on the piles and the resting
+    // pyramid of base 10 (bench/results/threads.md, box3d-threads.md). Only the
     // ThreadSanitizer build changes the default (CMake option SIMCORE_DEFAULT_THREADS), so that
     // every world its suites build, in code or from a file without "threads", steps on workers.
     int threads = SIMCORE_DEFAULT_THREADS;
