@@ -37,6 +37,25 @@ std::uint64_t libraryHash(const QString& path, int steps) {
     return stateHash(built.world);
 }
 
+// Loads `path` into `simulation` and plays it at the largest time scale (tests stay short);
+// empty, or why it could not.
+QString playFastForward(SimulationController& simulation, const QString& path) {
+    SceneDocument document;
+    QString error;
+    if (!document.load(path, &error) || !simulation.setScene(document.scene(), &error)) return error;
+    simulation.setTimeScale(SimulationController::kMaxTimeScale);
+    simulation.play();
+    return {};
+}
+
+// The runner's state after `steps` steps of `path` must be `world`'s, bit for bit.
+void compareWithRunner(const QString& path, int steps, const simcore::World& world) {
+    QString error;
+    const auto runner = test_support::runnerBodyStates(path, steps, &error);
+    QVERIFY2(runner, qPrintable(error));
+    QCOMPARE(stateHash(*runner), stateHash(world));
+}
+
 }  // namespace
 
 class TestEditorDeterminism : public QObject {
@@ -99,34 +118,24 @@ void TestEditorDeterminism::playLoopMatchesRunner() {
     // the largest time scale, so the test stays short); whatever count it stops at, the state is the
     // runner's for that count.
     const QString path = scenePath(QStringLiteral("dominoes.json"));
-    SceneDocument document;
-    QString error;
-    QVERIFY2(document.load(path, &error), qPrintable(error));
     SimulationController simulation;
-    QVERIFY2(simulation.setScene(document.scene(), &error), qPrintable(error));
-    simulation.setTimeScale(SimulationController::kMaxTimeScale);
-    simulation.play();
+    const QString error = playFastForward(simulation, path);
+    QVERIFY2(error.isEmpty(), qPrintable(error));
     QTRY_VERIFY_WITH_TIMEOUT(simulation.world()->stepCount() >= 150, 30'000);
     simulation.pause();
     const int steps = static_cast<int>(simulation.world()->stepCount());
     qInfo("Play ran %d steps", steps);
 
-    const auto runner = test_support::runnerBodyStates(path, steps, &error);
-    QVERIFY2(runner, qPrintable(error));
-    QCOMPARE(stateHash(*runner), stateHash(*simulation.world()));
+    compareWithRunner(path, steps, *simulation.world());
 }
 
 void TestEditorDeterminism::playLoopReadEveryMillisecondMatchesRunner() {
     // Every read of the world while playing (a pick, a panel) ends the batch in flight after its
     // step under way: read every millisecond, the batches are cut anywhere, and the run is the same.
     const QString path = scenePath(QStringLiteral("dominoes.json"));
-    SceneDocument document;
-    QString error;
-    QVERIFY2(document.load(path, &error), qPrintable(error));
     SimulationController simulation;
-    QVERIFY2(simulation.setScene(document.scene(), &error), qPrintable(error));
-    simulation.setTimeScale(SimulationController::kMaxTimeScale);
-    simulation.play();
+    const QString error = playFastForward(simulation, path);
+    QVERIFY2(error.isEmpty(), qPrintable(error));
     QElapsedTimer clock;
     clock.start();
     int reads = 0;
@@ -139,9 +148,7 @@ void TestEditorDeterminism::playLoopReadEveryMillisecondMatchesRunner() {
     const int steps = static_cast<int>(simulation.world()->stepCount());
     qInfo("Play ran %d steps, read %d times", steps, reads);
 
-    const auto runner = test_support::runnerBodyStates(path, steps, &error);
-    QVERIFY2(runner, qPrintable(error));
-    QCOMPARE(stateHash(*runner), stateHash(*simulation.world()));
+    compareWithRunner(path, steps, *simulation.world());
 }
 
 void TestEditorDeterminism::undoneEditAndSaveRunTheSame() {

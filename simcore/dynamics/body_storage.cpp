@@ -80,12 +80,8 @@ void BodyStorage::remove(BodyId id) {
 void BodyStorage::refreshInverseInertiaWorld(std::size_t i) {
     // The same moment about every axis (a sphere, a cube, a static body's zero): turning the body
     // leaves the tensor as it is, exactly, where rotating it would add rounding.
-    const Mat3& local = inverseInertiaLocal[i];
-    const bool isotropic = local[0][1] == 0.0f && local[0][2] == 0.0f && local[1][0] == 0.0f && local[1][2] == 0.0f &&
-                           local[2][0] == 0.0f && local[2][1] == 0.0f && local[0][0] == local[1][1] &&
-                           local[1][1] == local[2][2];
-    if (isotropic) {
-        inverseInertiaWorld[i] = local;
+    if (isScaledIdentity(inverseInertiaLocal[i])) {
+        inverseInertiaWorld[i] = inverseInertiaLocal[i];
         return;
     }
     const Mat3 r = glm::mat3_cast(orientation[i]);

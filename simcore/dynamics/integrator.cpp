@@ -33,11 +33,7 @@ glm::dmat3 skew(const glm::dvec3& v) { return glm::dmat3(0.0, v.z, -v.y, -v.z, 0
 // Whether a body-axes inertia is diagonal with equal moments that scale to exactly 1 (for some
 // moments x * (1 / x) rounds to just below 1).
 bool isotropicUnitScaled(const Mat3& inertia, double largestMoment) {
-    for (int column = 0; column < 3; ++column)
-        for (int row = 0; row < 3; ++row)
-            if (row != column && inertia[column][row] != 0.0f) return false;
-    return inertia[0][0] == inertia[1][1] && inertia[1][1] == inertia[2][2] &&
-           largestMoment * (1.0 / largestMoment) == 1.0;
+    return isScaledIdentity(inertia) && largestMoment * (1.0 / largestMoment) == 1.0;
 }
 
 // Torque-free Euler equations I dw/dt + w x (I w) = 0 in body axes, by the implicit midpoint rule:
