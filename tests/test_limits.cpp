@@ -9,24 +9,18 @@
 
 #include "simcore/io/scene_io.h"
 
+#include "support/run_program.h"
 #include "support/sanitizers.h"
 
 #include <QtTest>
 
 #include <nlohmann/json.hpp>
 
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <chrono>
 #include <cmath>
 #include <fstream>
 #include <functional>
-
-extern char** environ;
 
 using namespace simcore;
 
@@ -63,39 +57,10 @@ struct Measured {
     double seconds = 0.0;
 };
 
-std::string readAll(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-Measured runMeasured(const QTemporaryDir& dir, const QStringList& arguments) {
-    const std::string outPath = dir.filePath("stdout.txt").toStdString();
-    const std::string errPath = dir.filePath("stderr.txt").toStdString();
-    std::vector<std::string> args{INTERPLAY_RUN_PATH};
-    for (const QString& a : arguments) args.push_back(a.toStdString());
-    std::vector<char*> argv;
-    for (std::string& a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
-
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, 1, outPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    posix_spawn_file_actions_addopen(&actions, 2, errPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    Measured m;
-    pid_t pid = 0;
-    const auto start = std::chrono::steady_clock::now();
-    const int spawned = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
-    posix_spawn_file_actions_destroy(&actions);
-    if (spawned != 0) return m;
-    int status = 0;
-    rusage usage{};
-    if (wait4(pid, &status, 0, &usage) != pid) return m;
-    m.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    m.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    m.peakMiB = double(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
-    m.out = readAll(outPath);
-    m.err = readAll(errPath);
-    return m;
+Measured runMeasured(const QStringList& arguments) {
+    constexpr int kTimeoutMs = 600'000;  // the suite's own ctest limit is longer
+    const test_support::ProgramRun run = test_support::runProgram(INTERPLAY_RUN_PATH, arguments, kTimeoutMs);
+    return {run.exitCode, run.out.toStdString(), run.err.toStdString(), run.peakMiB, run.seconds};
 }
 
 void writeFile(const QString& path, const std::string& bytes) {
@@ -228,7 +193,7 @@ private slots:
             {"name": "bead", "shape": {"type": "box", "halfExtents": [0.0001, 0.0001, 0.0001]}, "mass": 0.000001, "position": [0, 0.01, 0], "angularVelocity": [3, 1, 2], "linearVelocity": [0.5, 0, 0]},
             {"name": "grain", "shape": {"type": "sphere", "radius": 0.0001}, "mass": 0.000001, "position": [0.1, 0.002, 0], "linearVelocity": [1, 0, 0.2]},
             {"name": "needle", "shape": {"type": "capsule", "radius": 0.0001, "halfHeight": 0.05}, "mass": 0.000001, "position": [0.3, 0.05, 0], "angularVelocity": [0, 5, 0]})"));
-        const Measured m = runMeasured(dir_, {path, "--seconds", "5"});
+        const Measured m = runMeasured({path, "--seconds", "5"});
         QVERIFY2(m.exitCode == 0, m.err.c_str());
         const nlohmann::json report = nlohmann::json::parse(m.out);
         std::string where;
@@ -255,7 +220,7 @@ private slots:
 
     void runnerStaysFiniteOnExtremeScenes() {
         QFETCH(QString, path);
-        const Measured m = runMeasured(dir_, {path, "--steps", "1000"});
+        const Measured m = runMeasured({path, "--steps", "1000"});
         QVERIFY2(m.exitCode == 0, m.err.c_str());
         const nlohmann::json report = nlohmann::json::parse(m.out);
         std::string where;
@@ -275,7 +240,7 @@ private slots:
               {"name": "heavy", "shape": {"type": "sphere", "radius": 0.61}, "mass": 1400, "position": [0, 5, 1000]}],
             "joints": [{"type": "distance", "bodyA": "light", "bodyB": "heavy", "anchor": [8, 5, 0],
                         "anchorB": [0, 5, 1000], "minLength": 0, "maxLength": 1}]})");
-        const Measured torn = runMeasured(dir_, {path, "--steps", "300"});
+        const Measured torn = runMeasured({path, "--steps", "300"});
         QVERIFY2(torn.exitCode == 0, torn.err.c_str());
         const nlohmann::json report = nlohmann::json::parse(torn.out);
         const auto bounded = report["metrics"]["boundedVelocities"].get<std::uint64_t>();
@@ -284,7 +249,7 @@ private slots:
         QVERIFY2(torn.err.find("torn.json: warning: a body's velocity was cut to the safety bound") != std::string::npos,
                  torn.err.c_str());
 
-        const Measured calm = runMeasured(dir_, {QString(INTERPLAY_SOURCE_DIR) + "/scenes/pendulums.json", "--steps", "300"});
+        const Measured calm = runMeasured({QString(INTERPLAY_SOURCE_DIR) + "/scenes/pendulums.json", "--steps", "300"});
         QVERIFY2(calm.exitCode == 0, calm.err.c_str());
         QCOMPARE(nlohmann::json::parse(calm.out)["metrics"]["boundedVelocities"].get<std::uint64_t>(), std::uint64_t(0));
         QVERIFY2(calm.err.empty(), calm.err.c_str());
@@ -302,7 +267,7 @@ private slots:
         writeFile(path, v1(bodies));
         bodies.clear();
         bodies.shrink_to_fit();
-        const Measured m = runMeasured(dir_, {path, "--steps", "1"});
+        const Measured m = runMeasured({path, "--steps", "1"});
         QCOMPARE(m.exitCode, 3);
         QVERIFY2(m.err.find("million.json: error at /bodies: the array has more than 100000 elements; a scene may have at "
                             "most 100000 bodies") != std::string::npos, m.err.c_str());
@@ -322,7 +287,7 @@ private slots:
         }
         const QString path = dir_.filePath("limit.json");
         writeFile(path, v1(bodies, R"({"gravity": [0, 0, 0]})"));
-        const Measured m = runMeasured(dir_, {path, "--steps", "2"});
+        const Measured m = runMeasured({path, "--steps", "2"});
         QVERIFY2(m.exitCode == 0, m.err.substr(0, 2000).c_str());
         const nlohmann::json report = nlohmann::json::parse(m.out);
         QCOMPARE(report["counters"]["bodies"].get<int>(), count);
@@ -341,7 +306,7 @@ private slots:
                  r.diagnostics[0].toString().c_str());
         const QString path = dir_.filePath("big.json");
         writeFile(path, text);
-        const Measured m = runMeasured(dir_, {path});
+        const Measured m = runMeasured({path});
         QCOMPARE(m.exitCode, 3);
         QVERIFY2(m.err.find("larger than 64 MiB") != std::string::npos, m.err.c_str());
     }
@@ -429,7 +394,7 @@ private slots:
         const std::string text = v1(R"({"shape": {"type": "sphere", "radius": 1}, "junk": )" + junk + "}");
         const QString path = dir_.filePath("values.json");
         writeFile(path, text);
-        const Measured m = runMeasured(dir_, {path});
+        const Measured m = runMeasured({path});
         QCOMPARE(m.exitCode, 3);
         QVERIFY2(m.err.find("values.json: error: the document has more than 4000000 values") != std::string::npos, m.err.c_str());
         qInfo("5e6 values refused in %.2f s, peak %.0f MiB", m.seconds, m.peakMiB);
@@ -453,7 +418,7 @@ private slots:
         const int cap = 128;
         const QString path = dir_.filePath("crowd.json");
         writeFile(path, coincidentCrowd(count));
-        const Measured m = runMeasured(dir_, {path, "--steps", QString::number(steps)});
+        const Measured m = runMeasured({path, "--steps", QString::number(steps)});
         QVERIFY2(m.exitCode == 0, m.err.c_str());
         const nlohmann::json report = nlohmann::json::parse(m.out);
         std::string where;
@@ -484,7 +449,7 @@ private slots:
         const QString path = dir_.filePath("force.json");
         writeFile(path, v1(R"({"name": "puck", "shape": {"type": "sphere", "radius": 0.5}, "mass": 2})",
                            R"({"gravity": [0, 0, 0], "timeStep": 0.015625, "substeps": 1})"));
-        const Measured m = runMeasured(dir_, {path, "--steps", "64", "--force", "puck=[4, 0, 0]"});
+        const Measured m = runMeasured({path, "--steps", "64", "--force", "puck=[4, 0, 0]"});
         QVERIFY2(m.exitCode == 0, m.err.c_str());
         const nlohmann::json body = nlohmann::json::parse(m.out)["bodies"][0];
         QCOMPARE(body["linearVelocity"][0].get<double>(), 2.0);
@@ -497,7 +462,7 @@ private slots:
         const QString path = dir_.filePath("blowup.json");
         writeFile(path, v1(R"({"name": "ground", "motion": "static", "shape": {"type": "box", "halfExtents": [5, 0.5, 5]}, "position": [0, -0.5, 0]},
                               {"name": "bead", "shape": {"type": "sphere", "radius": 0.5}, "mass": 0.000001, "position": [0, 2, 0]})"));
-        const Measured m = runMeasured(dir_, {path, "--steps", "10", "--force", "bead=[0,1e38,0]"});
+        const Measured m = runMeasured({path, "--steps", "10", "--force", "bead=[0,1e38,0]"});
         QCOMPARE(m.exitCode, 4);
         QVERIFY2(m.err.find("blowup.json: error: body 'bead' has a non-finite") != std::string::npos, m.err.c_str());
         QVERIFY2(m.err.find(" at step 1\n") != std::string::npos, m.err.c_str());
@@ -524,7 +489,7 @@ private slots:
         QFETCH(QString, expected);
         const QString path = dir_.filePath("opts.json");
         writeFile(path, v1(R"({"name": "puck", "shape": {"type": "sphere", "radius": 0.5}})"));
-        const Measured m = runMeasured(dir_, QStringList{path} + arguments);
+        const Measured m = runMeasured(QStringList{path} + arguments);
         QCOMPARE(m.exitCode, 2);
         QVERIFY2(m.err.find(expected.toStdString()) != std::string::npos, m.err.c_str());
     }

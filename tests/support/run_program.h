@@ -1,6 +1,6 @@
 #pragma once
-// Runs a program (the suites' interplay-run) to completion and hands back its exit code, stdout
-// and stderr. posix_spawn rather than QProcess: Qt 6.4 starts a child with
+// Runs a program (the suites' interplay-run) to completion and hands back its exit code, stdout,
+// stderr, wall time and peak memory. posix_spawn rather than QProcess: Qt 6.4 starts a child with
 // clone(CLONE_VM | CLONE_VFORK), which clang 14's ThreadSanitizer runtime (Debian 12's) takes for
 // a fork and then fails its own check in the parent (tsan_rtl.cpp:234, "!thr->slot") on every
 // start, so no suite that ran the runner could run under TSan. glibc's posix_spawn makes the same
@@ -17,6 +17,7 @@
 #include <fcntl.h>
 #include <spawn.h>
 #include <string>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <thread>
 #include <vector>
@@ -29,6 +30,8 @@ struct ProgramRun {
     bool finished = false;  // started, and exited by itself within the time allowed
     int exitCode = -1;      // -1 unless it exited normally
     QByteArray out, err;
+    double seconds = 0.0;  // wall time from start to exit
+    double peakMiB = 0.0;  // the child's peak resident memory (ru_maxrss)
 };
 
 inline ProgramRun runProgram(const QString& program, const QStringList& arguments, int timeoutMs = 60'000,
@@ -57,9 +60,11 @@ inline ProgramRun runProgram(const QString& program, const QStringList& argument
     if (spawned != 0) return run;
 
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(timeoutMs);
+    const auto start = std::chrono::steady_clock::now();
     int status = 0;
+    rusage usage{};
     for (;;) {
-        const pid_t waited = waitpid(pid, &status, WNOHANG);
+        const pid_t waited = wait4(pid, &status, WNOHANG, &usage);
         if (waited == pid) break;
         if (waited < 0) return run;
         if (std::chrono::steady_clock::now() > deadline) {
@@ -69,6 +74,8 @@ inline ProgramRun runProgram(const QString& program, const QStringList& argument
         }
         std::this_thread::sleep_for(std::chrono::milliseconds(2));
     }
+    run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    run.peakMiB = double(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
     run.finished = WIFEXITED(status);
     run.exitCode = run.finished ? WEXITSTATUS(status) : -1;
     QFile out(QString::fromStdString(outPath)), err(QString::fromStdString(errPath));
