@@ -37,8 +37,9 @@ void pause(int spins) {
 
 TaskPool::TaskPool(int threads) {
     const int total = threads > 0 ? threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+    shares_ = std::vector<Share>(static_cast<std::size_t>(total));
     workers_.reserve(static_cast<std::size_t>(total - 1));
-    for (int i = 1; i < total; ++i) workers_.emplace_back([this] { workerLoop(); });
+    for (int i = 1; i < total; ++i) workers_.emplace_back([this, i] { workerLoop(i); });
 }
 
 TaskPool::~TaskPool() {
@@ -54,22 +55,30 @@ TaskPool::~TaskPool() {
 // that joined and may still be running a chunk of it (its body lives on the caller's stack).
 void TaskPool::run(const Job& job) {
     job_ = job;
-    nextChunk_.store(0, std::memory_order_relaxed);
+    const std::size_t participants = shares_.size();
+    for (std::size_t p = 0; p < participants; ++p) {
+        shares_[p].next.store(job.chunks * p / participants, std::memory_order_relaxed);
+        shares_[p].end = job.chunks * (p + 1) / participants;
+    }
     generation_.fetch_add(1);  // odd: open; publishes job_ to the workers that see it
     if (sleepingWorkers_.load() > 0) {
         { std::lock_guard lock(mutex_); }  // as in the destructor
         wake_.notify_all();
     }
-    runChunks();
+    runChunks(0);
     generation_.fetch_add(1);  // even: closed to latecomers
     for (int spins = 0; busyWorkers_.load() > 0; ++spins) pause(spins);
 }
 
-void TaskPool::runChunks() {
+void TaskPool::runChunks(int participant) {
     const Job& job = job_;
-    for (std::size_t k = nextChunk_.fetch_add(1, std::memory_order_relaxed); k < job.chunks;
-         k = nextChunk_.fetch_add(1, std::memory_order_relaxed)) {
-        job.call(job.context, k, k * job.grain, std::min(job.count, (k + 1) * job.grain));
+    const std::size_t participants = shares_.size();
+    for (std::size_t i = 0; i < participants; ++i) {
+        Share& share = shares_[(static_cast<std::size_t>(participant) + i) % participants];
+        for (std::size_t k = share.next.fetch_add(1, std::memory_order_relaxed); k < share.end;
+             k = share.next.fetch_add(1, std::memory_order_relaxed)) {
+            job.call(job.context, k, k * job.grain, std::min(job.count, (k + 1) * job.grain));
+        }
     }
 }
 
@@ -88,7 +97,7 @@ std::uint64_t TaskPool::awaitGeneration(std::uint64_t seen) {
     return generation_.load();
 }
 
-void TaskPool::workerLoop() {
+void TaskPool::workerLoop(int participant) {
     std::uint64_t seen = 0;
     for (;;) {
         seen = awaitGeneration(seen);
@@ -96,7 +105,7 @@ void TaskPool::workerLoop() {
         if (seen % 2 == 0) continue;  // closed before this worker came
         busyWorkers_.fetch_add(1);
         // Still the job it saw: run() cannot close and reuse job_ without seeing this worker.
-        if (generation_.load() == seen) runChunks();
+        if (generation_.load() == seen) runChunks(participant);
         busyWorkers_.fetch_sub(1);
     }
 }
