@@ -1,5 +1,6 @@
 // The task pool and the multi-threaded step: the pool splits work into fixed chunks and runs every
-// one exactly once, waking workers that went to sleep; a world gives the same bits for 1, 2 and 4 threads on every benchmark scene and
+// one exactly once, waking workers that went to sleep; the tuner that picks, per stage, whether the
+// workers run it learns the faster way from timings and keeps checking; a world gives the same bits for 1, 2 and 4 threads on every benchmark scene and
 // on jointed scenes (bodies and contacts compared after every step); and a step with worker
 // threads allocates nothing once the contact set is steady.
 
@@ -9,6 +10,7 @@
 
 #include "simcore/io/scene_io.h"
 #include "simcore/parallel/task_pool.h"
+#include "simcore/parallel/worker_tuner.h"
 
 #include <QtTest>
 
@@ -94,6 +96,11 @@ private slots:
     void poolRunsEveryChunkOnce();
     void poolSumsInChunkOrder();
     void poolWakesSleepingWorkers();
+    void poolWithWorkersOffRunsOnTheCallerInOrder();
+    void tunerTriesBothWaysThenRunsTheFaster_data();
+    void tunerTriesBothWaysThenRunsTheFaster();
+    void tunerProbesLessOftenWhileItsChoiceHolds();
+    void tunerSwitchesWhenTheOtherWayGetsFaster();
     void stepIsBitIdenticalForAnyThreadCount_data();
     void stepIsBitIdenticalForAnyThreadCount();
     void changingThreadsMidRunChangesNothing();
@@ -162,6 +169,110 @@ void TestThreads::poolWakesSleepingWorkers() {
         });
         for (std::size_t i = 0; i < kCount; ++i) QCOMPARE(visits[i].load(), 1);
     }
+}
+
+void TestThreads::poolWithWorkersOffRunsOnTheCallerInOrder() {
+    TaskPool pool(4);
+    pool.setWorkersEnabled(false);
+    const std::thread::id caller = std::this_thread::get_id();
+    std::vector<std::size_t> chunks;  // unguarded: only the caller may write it
+    bool elsewhere = false;
+    pool.parallelFor(100, 7, [&](std::size_t chunk, std::size_t, std::size_t) {
+        elsewhere = elsewhere || std::this_thread::get_id() != caller;
+        chunks.push_back(chunk);
+    });
+    QVERIFY(!elsewhere);
+    QCOMPARE(chunks.size(), TaskPool::chunkCount(100, 7));
+    for (std::size_t k = 0; k < chunks.size(); ++k) QCOMPARE(chunks[k], k);
+}
+
+namespace {
+
+// Steps a one-stage tuner against a machine where a stage takes inlineMs(step) without workers and
+// workersMs(step) with them; returns, by step, whether it ran with workers.
+template <class InlineMs, class WorkersMs>
+std::vector<bool> tune(WorkerTuner<1>& tuner, int steps, InlineMs inlineMs, WorkersMs workersMs, int firstStep = 0) {
+    std::vector<bool> ways;
+    for (int step = firstStep; step < firstStep + steps; ++step) {
+        const bool withWorkers = tuner.useWorkers(0);
+        ways.push_back(withWorkers);
+        tuner.record(0, withWorkers ? workersMs(step) : inlineMs(step));
+    }
+    return ways;
+}
+
+std::vector<int> stepsWith(const std::vector<bool>& ways, bool withWorkers) {
+    std::vector<int> steps;
+    for (std::size_t i = 0; i < ways.size(); ++i)
+        if (ways[i] == withWorkers) steps.push_back(static_cast<int>(i));
+    return steps;
+}
+
+}  // namespace
+
+void TestThreads::tunerTriesBothWaysThenRunsTheFaster_data() {
+    QTest::addColumn<double>("inlineMs");
+    QTest::addColumn<double>("workersMs");
+    QTest::addColumn<bool>("workersWin");
+    QTest::newRow("workers twice as fast") << 2.0 << 1.0 << true;
+    QTest::newRow("workers slower") << 1.0 << 1.6 << false;
+}
+
+void TestThreads::tunerTriesBothWaysThenRunsTheFaster() {
+    QFETCH(double, inlineMs);
+    QFETCH(double, workersMs);
+    QFETCH(bool, workersWin);
+    WorkerTuner<1> tuner;
+    // The first step (which makes every pair) is ten times the rest: it must not decide.
+    const std::vector<bool> ways = tune(
+        tuner, 600, [&](int step) { return step == 0 ? 10.0 * inlineMs : inlineMs; },
+        [&](int) { return workersMs; });
+    QCOMPARE(ways[0], false);
+    QCOMPARE(ways[1], true);
+    // The outlier may pick the wrong way for the shortest interval; from the first probe on (step
+    // 10), the other way runs only in probes, fewer and fewer as they confirm the choice.
+    const int firstProbe = 2 + WorkerTuner<1>::kMinProbeInterval;
+    const std::vector<int> other = stepsWith(std::vector<bool>(ways.begin() + firstProbe + 1, ways.end()), !workersWin);
+    QVERIFY2(other.size() <= 8, qPrintable(QString::number(other.size())));
+    QVERIFY(other.size() >= 3);  // but it keeps checking
+    QCOMPARE(ways.back(), workersWin);
+}
+
+void TestThreads::tunerProbesLessOftenWhileItsChoiceHolds() {
+    using Tuner = WorkerTuner<1>;
+    Tuner tuner;
+    const std::vector<bool> ways = tune(tuner, 2000, [](int) { return 1.0; }, [](int) { return 3.0; });
+    const std::vector<int> probes = stepsWith(ways, true);  // the first is the learning step
+    QVERIFY(probes.size() >= 5);
+    int interval = Tuner::kMinProbeInterval;
+    for (std::size_t p = 1; p < probes.size(); ++p) {
+        // A probe, then `interval` steps the chosen way, then the next probe.
+        QCOMPARE(probes[p] - probes[p - 1], interval + 1);
+        interval = std::min(2 * interval, Tuner::kMaxProbeInterval);
+    }
+    QCOMPARE(interval, Tuner::kMaxProbeInterval);
+}
+
+void TestThreads::tunerSwitchesWhenTheOtherWayGetsFaster() {
+    WorkerTuner<1> tuner;
+    // A scene that grows: the workers lose for 300 steps, then win by 2x.
+    const auto inlineMs = [](int step) { return step < 300 ? 1.0 : 4.0; };
+    const auto workersMs = [](int step) { return step < 300 ? 1.5 : 2.0; };
+    const std::vector<bool> ways = tune(tuner, 900, inlineMs, workersMs);
+    QCOMPARE(ways[299], false);
+    // The change shows at the next probe: at most the longest interval later.
+    const std::vector<int> after = stepsWith(std::vector<bool>(ways.begin() + 300, ways.end()), false);
+    QVERIFY2(after.empty() || after.front() <= WorkerTuner<1>::kMaxProbeInterval + 1,
+             qPrintable(QString::number(after.front())));
+    QCOMPARE(ways.back(), true);
+    QVERIFY(std::count(ways.begin() + 300 + WorkerTuner<1>::kMaxProbeInterval + 1, ways.end(), false) <= 8);
+    // Two ways within the switch ratio, with noise of that size: the choice holds, so probes keep
+    // getting rarer (flipping would probe every 9 steps: over 100 changes of way).
+    WorkerTuner<1> close;
+    const std::vector<bool> near = tune(close, 600, [](int) { return 1.0; }, [](int step) { return step % 2 ? 0.97 : 1.01; });
+    int changes = 0;
+    for (std::size_t i = 1; i < near.size(); ++i) changes += near[i] != near[i - 1];
+    QVERIFY2(changes <= 16, qPrintable(QString::number(changes)));
 }
 
 void TestThreads::stepIsBitIdenticalForAnyThreadCount_data() {

@@ -14,6 +14,7 @@ nlohmann::ordered_json toJson(const simcore::Quat& q) { return {q.w, q.x, q.y, q
 void addStepProfile(RunSummary& summary, const simcore::StepProfile& profile) {
     for (std::size_t s = 0; s < summary.stageMs.size(); ++s) {
         summary.stageMs[s] += profile.stageMs[s];
+        if (profile.withWorkers[s]) ++summary.stepsWithWorkers[s];
         if (profile.skipped[s] == simcore::StageSkip::Ran) continue;
         ++summary.stageSkips[s];
         summary.lastSkip[s] = profile.skipped[s];
@@ -41,7 +42,8 @@ nlohmann::ordered_json makeReport(const simcore::World& world, const RunSummary&
         const auto s = static_cast<std::size_t>(info.stage);
         nlohmann::ordered_json stage = {{"stage", info.key},
                                         {"msPerStep", summary.stageMs[s] * perStep},
-                                        {"stepsRun", summary.steps - summary.stageSkips[s]}};
+                                        {"stepsRun", summary.steps - summary.stageSkips[s]},
+                                        {"stepsWithWorkers", summary.stepsWithWorkers[s]}};
         if (summary.stageSkips[s] > 0) stage["skipped"] = stageSkipReason(summary.lastSkip[s]);
         stages.push_back(stage);
     }

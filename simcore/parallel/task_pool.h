@@ -31,6 +31,10 @@ public:
 
     int threadCount() const { return static_cast<int>(workers_.size()) + 1; }
 
+    // Off: parallelFor runs every chunk on the calling thread, in chunk order, as with one thread
+    // (the same chunks, so the same results). For work the workers would only slow down.
+    void setWorkersEnabled(bool enabled) { workersEnabled_ = enabled; }
+
     // Chunks of `grain` indices (the last may be shorter): the unit of work, and the slots a
     // caller's per-chunk results go in.
     static std::size_t chunkCount(std::size_t count, std::size_t grain) { return (count + grain - 1) / grain; }
@@ -40,7 +44,7 @@ public:
     template <class Body>
     void parallelFor(std::size_t count, std::size_t grain, Body&& body) {
         const std::size_t chunks = chunkCount(count, grain);
-        if (workers_.empty() || chunks <= 1) {
+        if (workers_.empty() || !workersEnabled_ || chunks <= 1) {
             for (std::size_t k = 0; k < chunks; ++k) body(k, k * grain, std::min(count, (k + 1) * grain));
             return;
         }
@@ -82,6 +86,7 @@ private:
     std::uint64_t awaitGeneration(std::uint64_t seen);
 
     std::vector<std::thread> workers_;
+    bool workersEnabled_ = true;
     std::vector<std::uint64_t> chunkSums_;  // parallelSum's, by chunk; reused
     Job job_;  // written by run() only while no worker is in a job
     // Odd while a job is open to workers. A worker joins by counting itself in busyWorkers_ and

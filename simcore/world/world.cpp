@@ -133,9 +133,10 @@ void World::step() {
     const auto stepStart = std::chrono::steady_clock::now();
     StepProfile profile;
     StepPlan plan = planStep(profile.skipped);
-    const auto run = [&profile](Stage stage, auto&& work) {
+    const auto run = [&profile, this](Stage stage, auto&& work) {
         const auto s = static_cast<std::size_t>(stage);
         if (profile.skipped[s] != StageSkip::Ran) return;
+        profile.withWorkers[s] = threads_.startStage(stage);
         ScopedStageTimer timer(profile.stageMs[s]);
         work();
     };
@@ -172,6 +173,7 @@ void World::step() {
     run(Stage::Sleep, [&] { sleepRestingIslands(plan); });
 
     finishStep(plan, profile);
+    threads_.learn(profile);
     profile.totalMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - stepStart).count();
     lastProfile_ = profile;
 }

@@ -11,6 +11,7 @@
 #include "simcore/dynamics/joint_solver.h"
 #include "simcore/dynamics/joint_storage.h"
 #include "simcore/parallel/task_pool.h"
+#include "simcore/parallel/worker_tuner.h"
 #include "simcore/world/profiler.h"
 #include "simcore/world_settings.h"
 
@@ -59,8 +60,9 @@ struct ContactLoad {
     float normalForce = 0.0f;  // N: their points' normal impulses over the last substep, per second
 };
 
-// The world's worker threads. A copied world gets a pool of its own with as many threads, made
-// when it first steps: a copy kept as a snapshot holds no threads.
+// The world's worker threads, and which stages use them (WorkerTuner). A copied world gets a pool
+// of its own with as many threads, made when it first steps, and learns anew: a copy kept as a
+// snapshot holds no threads.
 class WorldThreads {
 public:
     WorldThreads() = default;
@@ -69,6 +71,7 @@ public:
         if (this != &other) {
             threads_ = other.threads_;
             pool_.reset();
+            tuner_ = {};
         }
         return *this;
     }
@@ -80,15 +83,31 @@ public:
     void configure(int threads) {
         threads_ = threads;
         pool_.reset();
+        tuner_ = {};
     }
     TaskPool& pool() const {
         if (!pool_) pool_ = std::make_unique<TaskPool>(threads());
         return *pool_;
     }
 
+    // Sets on the pool whether `stage` runs with workers this step, and returns it.
+    bool startStage(Stage stage) const {
+        const bool withWorkers = pool().threadCount() > 1 && tuner_.useWorkers(index(stage));
+        pool().setWorkersEnabled(withWorkers);
+        return withWorkers;
+    }
+    // After a step: what its stages took, as they ran; outside a step the workers are on again.
+    void learn(const StepProfile& profile) {
+        for (std::size_t s = 0; s < kStageCount; ++s)
+            if (profile.skipped[s] == StageSkip::Ran && pool().threadCount() > 1) tuner_.record(s, profile.stageMs[s]);
+        pool().setWorkersEnabled(true);
+    }
+
 private:
+    static std::size_t index(Stage stage) { return static_cast<std::size_t>(stage); }
     std::optional<int> threads_;                 // settings.threads (0: one per core)
     mutable std::unique_ptr<TaskPool> pool_;
+    WorkerTuner<kStageCount> tuner_;
 };
 
 struct NonFiniteBody {

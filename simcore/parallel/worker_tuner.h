@@ -1,0 +1,83 @@
+#pragma once
+// Which of a step's stages gain from the pool's workers on this machine, learnt from the stages'
+// own timings as the world steps. A stage's results do not depend on which threads ran its chunks
+// (task_pool.h), so the choice changes only the time a step takes, never its bits.
+//
+// Why: a stage's jobs are a few microseconds each (a colour of the solver), and what a second
+// thread gains on them depends on the machine. On one 2-core machine two threads stepped pyramid20
+// 1.8x faster than one (2026-12-03); on another, whose second core adds little (two independent
+// 1-thread runs each slowed by 1.45x), they stepped pyramid10 at 0.64x the speed (2026-12-04). A fixed rule (a grain, a minimum size) right for one is wrong for
+// the other; a measurement is right for both.
+//
+// How: each stage keeps an estimate of its time per step with and without workers (for the way it
+// runs, an exponential average over its steps; for the other, the latest probe), runs the way that
+// is faster, and now and then tries the other (a probe). A probe that confirms the choice doubles the time to the next one (up
+// to kMaxProbeInterval steps, so a settled choice costs almost nothing to check); one that wins
+// switches and starts probing often again, as a scene that grows or falls asleep can change the
+// answer.
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+
+namespace simcore {
+
+template <std::size_t Stages>
+class WorkerTuner {
+public:
+    static constexpr int kMinProbeInterval = 8;    // steps
+    static constexpr int kMaxProbeInterval = 256;  // steps: about 4 s at 60 Hz
+    // The other way must be this much faster to be chosen: timing noise alone does not flip it.
+    static constexpr double kSwitchRatio = 0.95;
+    static constexpr double kAveraging = 0.25;  // weight of a new step's time in the estimate
+
+    // Whether this step runs `stage` with workers.
+    bool useWorkers(std::size_t stage) const {
+        const StageState& state = states_[stage];
+        if (state.estimateMs[kInline] < 0.0) return false;  // learning: one step each way first
+        if (state.estimateMs[kWorkers] < 0.0) return true;
+        return state.stepsToProbe == 0 ? !state.workersChosen : state.workersChosen;
+    }
+
+    // The stage's time in a step that ran it as useWorkers said.
+    void record(std::size_t stage, double ms) {
+        StageState& state = states_[stage];
+        const bool probing = state.estimateMs[kInline] >= 0.0 && state.estimateMs[kWorkers] >= 0.0 &&
+                             state.stepsToProbe == 0;
+        const int way = useWorkers(stage) ? kWorkers : kInline;
+        double& estimate = state.estimateMs[way];
+        // A probe's time replaces the last one: averaged in, the first step's (which makes every
+        // pair) outweighed the probes for hundreds of steps.
+        estimate = estimate < 0.0 || probing ? ms : estimate + kAveraging * (ms - estimate);
+        if (probing) {
+            const int chosen = state.workersChosen ? kWorkers : kInline;
+            if (state.estimateMs[way] < kSwitchRatio * state.estimateMs[chosen]) {
+                state.workersChosen = way == kWorkers;
+                state.probeInterval = kMinProbeInterval;
+            } else {
+                state.probeInterval = std::min(2 * state.probeInterval, kMaxProbeInterval);
+            }
+            state.stepsToProbe = state.probeInterval;
+        } else if (state.estimateMs[kInline] >= 0.0 && state.estimateMs[kWorkers] >= 0.0) {
+            if (state.stepsToProbe == kNotStarted) {  // both ways measured once: the faster to start
+                state.workersChosen = state.estimateMs[kWorkers] < state.estimateMs[kInline];
+                state.stepsToProbe = state.probeInterval;
+            } else {
+                --state.stepsToProbe;
+            }
+        }
+    }
+
+private:
+    static constexpr int kInline = 0, kWorkers = 1;
+    static constexpr int kNotStarted = -1;
+    struct StageState {
+        double estimateMs[2] = {-1.0, -1.0};  // by way; negative: not measured yet
+        bool workersChosen = false;
+        int probeInterval = kMinProbeInterval;
+        int stepsToProbe = kNotStarted;  // steps the choice runs before the next probe
+    };
+    std::array<StageState, Stages> states_{};
+};
+
+}  // namespace simcore
