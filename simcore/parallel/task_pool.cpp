@@ -61,7 +61,10 @@ void TaskPool::run(const Job& job) {
         shares_[p].end = job.chunks * (p + 1) / participants;
     }
     generation_.fetch_add(1);  // odd: open; publishes job_ to the workers that see it
-    if (sleepingWorkers_.load() > 0) {
+    // One wake-up call until a worker answers it: a job every few microseconds would otherwise make
+    // a system call each while the workers take tens of microseconds to wake (a stage the tuner
+    // probes with workers after a spell without them).
+    if (sleepingWorkers_.load() > 0 && !wakeCalled_.exchange(true)) {
         { std::lock_guard lock(mutex_); }  // as in the destructor
         wake_.notify_all();
     }
@@ -94,6 +97,7 @@ std::uint64_t TaskPool::awaitGeneration(std::uint64_t seen) {
     sleepingWorkers_.fetch_add(1);  // before the check: run() either sees it or is seen by it
     wake_.wait(lock, [&] { return stopping_.load() || generation_.load() != seen; });
     sleepingWorkers_.fetch_sub(1);
+    wakeCalled_.store(false);  // answered: a worker that sleeps from now on needs a new call
     return generation_.load();
 }
 

@@ -106,6 +106,7 @@ private:
     std::vector<Share> shares_;  // by participant
     std::atomic<int> busyWorkers_{0};        // workers in the current job
     std::atomic<int> sleepingWorkers_{0};    // workers blocked on wake_ (changed under mutex_)
+    std::atomic<bool> wakeCalled_{false};    // notified, and no worker has woken from it yet
     std::atomic<bool> stopping_{false};
     std::mutex mutex_;  // only for sleeping and waking
     std::condition_variable wake_;
