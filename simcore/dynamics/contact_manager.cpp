@@ -231,6 +231,10 @@ bool refreshManifold(Contact& contact, const BodyStorage& bodies, const BroadPha
     ContactManifold manifold;
     collideSubShapes(bodies, a, contact.subShapeA, b, contact.subShapeB, margin, manifold);
 
+    // A pair whose shapes no longer touch keeps no impulse: the friction one belongs to the
+    // manifold as a whole, and carried to points found later it would warm-start them from a
+    // contact that had ended (as when the bounds part, above).
+    if (manifold.pointCount == 0) contact.frictionImpulse = {};
     contact.impulses = matchImpulses(contact.manifold, contact.impulses, manifold);
     contact.manifold = manifold;
     keepInBodyFrames(contact, bodies.transform(a), bodies.transform(b));
