@@ -2,6 +2,8 @@
 // Persistent contacts: one per pair of sub-shapes (shape.h) of two bodies whose fat bounds overlap.
 // Each manifold point keeps its accumulated impulses across steps, matched by feature id within
 // its sub-shape pair, so the solver starts from last step's answer.
+// A contact is only the pair; its manifold and impulses (a ManifoldRecord) exist while it has
+// points, in a pool of records reused through a free list, since most pairs never touch.
 //
 // Two bodies with one sub-shape each (every convex shape) have one contact, created from the
 // broad phase's new pair and destroyed when their fat bounds separate. A body pair where either
@@ -159,7 +161,7 @@ private:
     std::vector<ManifoldRecord> manifolds_;            // the pool: records in use and free ones
     std::vector<std::uint32_t> freeManifolds_;         // indices into manifolds_ not in use, taken last in first out
     std::vector<PairChange> changes_;                  // scratch, by contact: what the narrow phase found
-    std::vector<std::uint32_t> gainingPoints_;         // scratch: the contacts that GainsPoints, in order
+    std::vector<std::uint32_t> gainingPoints_;         // scratch: contacts that gained points this step, in order
 };
 
 }  // namespace simcore
