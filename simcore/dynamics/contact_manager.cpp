@@ -164,12 +164,10 @@ void collideSubShapes(const BodyStorage& bodies, std::size_t a, std::uint32_t su
                   subShapeTransform(shapeB, subB, bodies.transform(b)), margin, manifold);
 }
 
-// Keeps the manifold just made in its bodies' frames, for reuseManifold.
-void keepInBodyFrames(Contact& contact, const Transform& ta, const Transform& tb) {
-    const ContactManifold& manifold = contact.manifold;
-    ManifoldInBodyFrames& kept = contact.manifoldInBodyFrames;
-    kept.valid = manifold.pointCount > 0;
-    if (!kept.valid) return;
+// Keeps the manifold just made (with points) in its bodies' frames, for reuseManifold.
+void keepInBodyFrames(ManifoldRecord& record, const Transform& ta, const Transform& tb) {
+    const ContactManifold& manifold = record.manifold;
+    ManifoldInBodyFrames& kept = record.inBodyFrames;
     kept.bInA = {ta.applyInverse(tb.position), glm::conjugate(ta.rotation) * tb.rotation};
     kept.normalInA = ta.rotateInverse(manifold.normal);
     kept.reachB = 0.0f;
@@ -180,18 +178,18 @@ void keepInBodyFrames(Contact& contact, const Transform& ta, const Transform& tb
     }
 }
 
-// Moves the kept (valid) manifold's points with their bodies and measures their separations again, if no
+// Moves the kept manifold's points with their bodies and measures their separations again, if no
 // point of B has moved against A by more than `reuseDistance` since it was made. Fresh SAT and
 // clipping would find the same features at points at most that far from these.
-bool reuseManifold(Contact& contact, const Transform& ta, const Transform& tb, float reuseDistance) {
-    const ManifoldInBodyFrames& kept = contact.manifoldInBodyFrames;
+bool reuseManifold(ManifoldRecord& record, const Transform& ta, const Transform& tb, float reuseDistance) {
+    const ManifoldInBodyFrames& kept = record.inBodyFrames;
     const Vec3 shift = ta.applyInverse(tb.position) - kept.bInA.position;
     // |xyz| of the turn since then is sin(angle / 2), whichever sign the quaternion has; a point at
     // distance r from B's origin moves by 2 sin(angle / 2) r.
     const Quat turn = glm::conjugate(kept.bInA.rotation) * (glm::conjugate(ta.rotation) * tb.rotation);
     const float turnMove = 2.0f * glm::length(Vec3(turn.x, turn.y, turn.z)) * kept.reachB;
     if (glm::length(shift) + turnMove > reuseDistance) return false;
-    ContactManifold& manifold = contact.manifold;
+    ContactManifold& manifold = record.manifold;
     manifold.normal = ta.rotate(kept.normalInA);
     for (int p = 0; p < manifold.pointCount; ++p) {
         ContactPoint& point = manifold.points[p];
@@ -202,39 +200,12 @@ bool reuseManifold(Contact& contact, const Transform& ta, const Transform& tb, f
     return true;
 }
 
-// The narrow phase for one contact; false when it is to go: its bodies' fat boxes no longer
-// overlap, or, made by the mid-phase, its sub-shapes' grown bounds no longer do.
-bool refreshManifold(Contact& contact, const BodyStorage& bodies, const BroadPhase& broadPhase, float speculativeDistance,
-                     float reuseDistance, float timeStep) {
-    const std::size_t a = bodies.denseIndexOfSlot(contact.slotA);
-    const std::size_t b = bodies.denseIndexOfSlot(contact.slotB);
-    // A sleeping pair keeps its manifold, ready for when it wakes.
-    if (!isAwakeDynamic(bodies, a) && !isAwakeDynamic(bodies, b)) return true;
-    if (!broadPhase.testOverlap(bodies.proxy[a], bodies.proxy[b])) return false;
-    if (contact.manifoldInBodyFrames.valid &&
-        reuseManifold(contact, bodies.transform(a), bodies.transform(b), reuseDistance))
-        return true;
-
-    const float margin = speculativeMargin(bodies, a, b, speculativeDistance, timeStep);
-    // Fat boxes overlap long before shapes touch: when even the tight boxes, grown by the
-    // margin, are apart, the pair has no points and the shape test is skipped.
-    const Aabb reach = grown(subShapeWorldBounds(bodies, a, contact.subShapeA), margin);
-    if (!reach.overlaps(subShapeWorldBounds(bodies, b, contact.subShapeB))) {
-        if (contact.ofSubShapeBodyPair) return false;  // the mid-phase makes it again when they near
-        contact.manifold.pointCount = 0;
-        contact.manifoldInBodyFrames.valid = false;
-        contact.impulses = {};
-        contact.frictionImpulse = {};
-        return true;
-    }
-
-    ContactManifold manifold;
-    collideSubShapes(bodies, a, contact.subShapeA, b, contact.subShapeB, margin, manifold);
-
-    contact.impulses = matchImpulses(contact.manifold, contact.impulses, manifold);
-    contact.manifold = manifold;
-    keepInBodyFrames(contact, bodies.transform(a), bodies.transform(b));
-    return true;
+// A contact's manifold made anew, with impulses carried over from its old points.
+void storeFreshManifold(ManifoldRecord& record, const ContactManifold& manifold, const Transform& ta,
+                        const Transform& tb) {
+    record.impulses = matchImpulses(record.manifold, record.impulses, manifold);
+    record.manifold = manifold;
+    keepInBodyFrames(record, ta, tb);
 }
 
 }  // namespace
@@ -324,31 +295,105 @@ void ContactManager::findSubShapePairs(const BodyStorage& bodies, const BroadPha
     }
 }
 
+// The narrow phase for one contact: reads the bodies and writes only this contact's record. A
+// contact without one that now has points is only reported: records are taken after the parallel
+// pass, and its manifold is made again then (pairs begin to touch far more rarely than they stay
+// in touch, and keeping those manifolds in the meantime would cost more memory than the pool saves).
+ContactManager::PairChange ContactManager::refreshManifold(const Contact& contact, const BodyStorage& bodies,
+                                                           const BroadPhase& broadPhase, float speculativeDistance,
+                                                           float reuseDistance, float timeStep) {
+    const std::size_t a = bodies.denseIndexOfSlot(contact.slotA);
+    const std::size_t b = bodies.denseIndexOfSlot(contact.slotB);
+    // A sleeping pair keeps its manifold, ready for when it wakes.
+    if (!isAwakeDynamic(bodies, a) && !isAwakeDynamic(bodies, b)) return PairChange::None;
+    // Its bodies' fat boxes no longer overlap: it goes.
+    if (!broadPhase.testOverlap(bodies.proxy[a], bodies.proxy[b])) return PairChange::Separates;
+    ManifoldRecord* record = contact.hasPoints() ? &manifolds_[contact.manifoldIndex] : nullptr;
+    if (record && reuseManifold(*record, bodies.transform(a), bodies.transform(b), reuseDistance))
+        return PairChange::None;
+
+    const PairChange noPoints = record ? PairChange::LosesPoints : PairChange::None;
+    const float margin = speculativeMargin(bodies, a, b, speculativeDistance, timeStep);
+    // Fat boxes overlap long before shapes touch: when even the tight boxes, grown by the
+    // margin, are apart, the pair has no points and the shape test is skipped.
+    const Aabb reach = grown(subShapeWorldBounds(bodies, a, contact.subShapeA), margin);
+    if (!reach.overlaps(subShapeWorldBounds(bodies, b, contact.subShapeB))) {
+        // Made by the mid-phase, it goes: the mid-phase makes it again when the sub-shapes near.
+        return contact.ofSubShapeBodyPair ? PairChange::Separates : noPoints;
+    }
+
+    ContactManifold manifold;
+    collideSubShapes(bodies, a, contact.subShapeA, b, contact.subShapeB, margin, manifold);
+    if (manifold.pointCount == 0) return noPoints;
+    if (!record) return PairChange::GainsPoints;
+    storeFreshManifold(*record, manifold, bodies.transform(a), bodies.transform(b));
+    return PairChange::None;
+}
+
 void ContactManager::updateManifolds(const BodyStorage& bodies, const BroadPhase& broadPhase,
                                      float speculativeDistance, float reuseDistance, float timeStep, TaskPool& pool) {
-    // Each contact's update reads the bodies and writes only that contact, so the contacts are
-    // refreshed in parallel and the separated ones removed after, in the order a single pass
-    // would remove them (removal moves the last contact into the gap: the order is part of the
-    // state).
     findSubShapePairs(bodies, broadPhase, speculativeDistance, timeStep);
-    separated_.resize(contacts_.size());
+    // Each contact's update reads the bodies and writes only that contact's record, so the contacts
+    // are refreshed in parallel. What changes the pool or the list of contacts follows on this
+    // thread, in contact order: records given back, then taken (and their first manifolds made, in
+    // parallel again, each into its own record), then the separated contacts removed in the order a
+    // single pass would remove them (removal moves the last contact into the gap: the order is part
+    // of the state).
+    changes_.resize(contacts_.size());
     pool.parallelFor(contacts_.size(), kNarrowPhaseGrain, [&](std::size_t, std::size_t begin, std::size_t end) {
         for (std::size_t c = begin; c < end; ++c)
-            separated_[c] = !refreshManifold(contacts_[c], bodies, broadPhase, speculativeDistance, reuseDistance, timeStep);
+            changes_[c] = refreshManifold(contacts_[c], bodies, broadPhase, speculativeDistance, reuseDistance, timeStep);
+    });
+    gainingPoints_.clear();
+    for (std::size_t c = 0; c < contacts_.size(); ++c) {
+        if (changes_[c] == PairChange::LosesPoints) releaseManifold(contacts_[c]);
+        if (changes_[c] == PairChange::GainsPoints) gainingPoints_.push_back(static_cast<std::uint32_t>(c));
+    }
+    for (const std::uint32_t c : gainingPoints_) takeManifold(contacts_[c]);
+    pool.parallelFor(gainingPoints_.size(), kNarrowPhaseGrain, [&](std::size_t, std::size_t begin, std::size_t end) {
+        for (std::size_t k = begin; k < end; ++k) {
+            const Contact& contact = contacts_[gainingPoints_[k]];
+            const std::size_t a = bodies.denseIndexOfSlot(contact.slotA);
+            const std::size_t b = bodies.denseIndexOfSlot(contact.slotB);
+            // The test refreshManifold ran, on the same bodies: the same points, bit for bit.
+            ContactManifold manifold;
+            collideSubShapes(bodies, a, contact.subShapeA, b, contact.subShapeB,
+                             speculativeMargin(bodies, a, b, speculativeDistance, timeStep), manifold);
+            storeFreshManifold(manifolds_[contact.manifoldIndex], manifold, bodies.transform(a), bodies.transform(b));
+        }
     });
     for (std::size_t c = 0; c < contacts_.size();) {
-        if (!separated_[c]) {
+        if (changes_[c] != PairChange::Separates) {
             ++c;
             continue;
         }
-        separated_[c] = separated_.back();  // removeAt moves the last contact into slot c: visit it next
-        separated_.pop_back();
+        changes_[c] = changes_.back();  // removeAt moves the last contact into slot c: visit it next
+        changes_.pop_back();
         removeAt(c);
     }
 }
 
+// A contact that gains points takes a record with no points and no impulses: its new points start
+// from zero, as they would match no old point.
+void ContactManager::takeManifold(Contact& contact) {
+    if (freeManifolds_.empty()) {
+        contact.manifoldIndex = static_cast<std::uint32_t>(manifolds_.size());
+        manifolds_.emplace_back();
+        return;
+    }
+    contact.manifoldIndex = freeManifolds_.back();
+    freeManifolds_.pop_back();
+    manifolds_[contact.manifoldIndex] = {};
+}
+
+void ContactManager::releaseManifold(Contact& contact) {
+    freeManifolds_.push_back(contact.manifoldIndex);
+    contact.manifoldIndex = Contact::kNoManifold;
+}
+
 void ContactManager::removeAt(std::size_t index) {
-    const Contact& gone = contacts_[index];
+    Contact& gone = contacts_[index];
+    if (gone.hasPoints()) releaseManifold(gone);
     const std::uint64_t bodyKey = PairTable::key(gone.slotA, gone.slotB);
     if (gone.ofSubShapeBodyPair) {
         // Its body pair may have gone first (fat boxes parted): then there is nothing to update.
@@ -432,6 +477,8 @@ void ContactManager::removePair(std::uint32_t slotA, std::uint32_t slotB) {
 
 void ContactManager::clear() {
     contacts_.clear();
+    manifolds_.clear();
+    freeManifolds_.clear();
     pairToContact_.clear();
     subShapeBodyPairs_.clear();
     pairToSubShapeBodyPair_.clear();

@@ -2,6 +2,8 @@
 // Persistent contacts: one per pair of sub-shapes (shape.h) of two bodies whose fat bounds overlap.
 // Each manifold point keeps its accumulated impulses across steps, matched by feature id within
 // its sub-shape pair, so the solver starts from last step's answer.
+// A contact is only the pair; its manifold and impulses (a ManifoldRecord) exist while it has
+// points, in a pool of records reused through a free list, since most pairs never touch.
 //
 // Two bodies with one sub-shape each (every convex shape) have one contact, created from the
 // broad phase's new pair and destroyed when their fat bounds separate. A body pair where either
@@ -43,22 +45,35 @@ struct ManifoldInBodyFrames {
     Vec3 normalInA{0.0f};
     std::array<Vec3, kMaxManifoldPoints> pointInA{}, pointInB{};  // each point on its own body
     float reachB = 0.0f;  // the farthest point from B's origin (m): how far a turn of B moves them
-    bool valid = false;   // false: no points, or not made yet
+};
+
+// What a contact carries only while it has points: its manifold, that manifold in the bodies'
+// frames, and the impulses accumulated on it. Most pairs the broad phase finds never touch (in a
+// resting pile of cubes, three in four), so these live in a pool of their own, taken when a
+// contact gains points and given back when it loses them, and a pair without points costs only
+// its Contact.
+struct ManifoldRecord {
+    ContactManifold manifold;             // world frame, as the narrow phase made or moved it this step
+    ManifoldInBodyFrames inBodyFrames;
+    std::array<ContactImpulse, kMaxManifoldPoints> impulses{};
+    FrictionImpulse frictionImpulse;
 };
 
 struct Contact {
+    static constexpr std::uint32_t kNoManifold = ~std::uint32_t{0};
+
     std::uint32_t slotA = 0, slotB = 0;  // body slots (BodyId::index): stable across removals
     std::uint32_t subShapeA = 0, subShapeB = 0;  // sub-shape of each body (0 for a convex shape)
-    bool ofSubShapeBodyPair = false;     // made by the mid-phase for a body pair with several sub-shapes
     float friction = 0.0f;               // combined: sqrt(frictionA * frictionB)
     float restitution = 0.0f;            // combined: max(restitutionA, restitutionB)
     float rollingLever = 0.0f;           // m, combined: max(CA, CB) max(rA, rB)
+    // Its ManifoldRecord (ContactManager::manifoldOf) while it has points, else kNoManifold.
+    std::uint32_t manifoldIndex = kNoManifold;
+    bool ofSubShapeBodyPair = false;     // made by the mid-phase for a body pair with several sub-shapes
     bool dynamicPair = false;            // both bodies dynamic at creation: counts toward their contact cap
                                          // (false in a SubShapeBodyPair, which counts once for all)
-    ContactManifold manifold;
-    ManifoldInBodyFrames manifoldInBodyFrames;
-    std::array<ContactImpulse, kMaxManifoldPoints> impulses{};
-    FrictionImpulse frictionImpulse;
+
+    bool hasPoints() const { return manifoldIndex != kNoManifold; }
 };
 
 // Friction combines by geometric mean (a frictionless surface makes any pair frictionless) and
@@ -104,8 +119,10 @@ public:
     void removePair(std::uint32_t slotA, std::uint32_t slotB);
     void clear();
 
-    std::vector<Contact>& contacts() { return contacts_; }
     const std::vector<Contact>& contacts() const { return contacts_; }
+    // The manifold and impulses of a contact that has points (contact.hasPoints()).
+    const ManifoldRecord& manifoldOf(const Contact& contact) const { return manifolds_[contact.manifoldIndex]; }
+    ManifoldRecord& manifoldOf(const Contact& contact) { return manifolds_[contact.manifoldIndex]; }
 
     std::size_t subShapeBodyPairCount() const { return subShapeBodyPairs_.size(); }
 
@@ -118,6 +135,19 @@ private:
         std::vector<std::uint64_t> subShapePairs;  // sorted (subShapeA << 32 | subShapeB) of its contacts
     };
 
+    // What the narrow phase found for one contact. The parallel pass only notes it; the changes to
+    // the contact list and the manifold pool follow on one thread, in contact order, so that they
+    // are race-free and the same for any thread count.
+    enum class PairChange : std::uint8_t {
+        None,         // kept its points (refreshed, moved along or asleep), or still has none
+        GainsPoints,  // had none and has some now: collided again, into the record taken for it
+        LosesPoints,  // its ManifoldRecord goes back to the pool
+        Separates,    // the contact goes
+    };
+    PairChange refreshManifold(const Contact& contact, const BodyStorage& bodies, const BroadPhase& broadPhase,
+                               float speculativeDistance, float reuseDistance, float timeStep);
+    void takeManifold(Contact& contact);
+    void releaseManifold(Contact& contact);
     void findSubShapePairs(const BodyStorage& bodies, const BroadPhase& broadPhase, float speculativeDistance,
                            float timeStep);
     void removeAt(std::size_t index);
@@ -128,7 +158,10 @@ private:
     std::vector<SubShapeBodyPair> subShapeBodyPairs_;
     PairTable pairToSubShapeBodyPair_;
     std::vector<std::uint32_t> contactsOfSlot_;  // by body slot: contacts with other dynamic bodies
-    std::vector<std::uint8_t> separated_;        // scratch, by contact: to remove after the narrow phase
+    std::vector<ManifoldRecord> manifolds_;            // the pool: records in use and free ones
+    std::vector<std::uint32_t> freeManifolds_;         // indices into manifolds_ not in use, taken last in first out
+    std::vector<PairChange> changes_;                  // scratch, by contact: what the narrow phase found
+    std::vector<std::uint32_t> gainingPoints_;         // scratch: contacts that gained points this step, in order
 };
 
 }  // namespace simcore

@@ -72,8 +72,9 @@ std::int32_t ContactSolver::solverBody(std::size_t denseIndex, const BodyStorage
     return index;
 }
 
-void ContactSolver::prepare(const std::vector<Contact>& contacts, const BodyStorage& bodies, const Params& params,
+void ContactSolver::prepare(const ContactManager& contactManager, const BodyStorage& bodies, const Params& params,
                             TaskPool& pool) {
+    const std::vector<Contact>& contacts = contactManager.contacts();
     params_ = params;
     pool_ = &pool;
     maxPenetration_ = 0.0f;
@@ -99,7 +100,7 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const BodyStor
     unevenBody_.clear();
     for (std::size_t ci = 0; ci < contacts.size(); ++ci) {
         const Contact& contact = contacts[ci];
-        if (contact.manifold.pointCount == 0) continue;
+        if (!contact.hasPoints()) continue;
         const std::size_t a = bodies.denseIndexOfSlot(contact.slotA);
         const std::size_t b = bodies.denseIndexOfSlot(contact.slotB);
         const bool movesA = bodies.motion[a] == MotionType::Dynamic && bodies.awake[a];
@@ -166,7 +167,8 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const BodyStor
         const int lane = static_cast<int>(entry % kLanes);
 
         const Contact& contact = contacts[ci];
-        const ContactManifold& manifold = contact.manifold;
+        const ManifoldRecord& record = contactManager.manifoldOf(contact);
+        const ContactManifold& manifold = record.manifold;
         const std::size_t a = bodies.denseIndexOfSlot(contact.slotA);
         const std::size_t b = bodies.denseIndexOfSlot(contact.slotB);
         const bool movesA = bodies.motion[a] == MotionType::Dynamic && bodies.awake[a];
@@ -212,16 +214,16 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const BodyStor
         if (rollingLever > 0.0f) {
             batch.rollingLever.setLane(lane, rollingLever);
             setLanes(batch.rollingMass, lane, rollingMass(inverseInertiaA, inverseInertiaB));
-            setLanes(batch.rollingImpulse, lane, contact.frictionImpulse.rolling);
+            setLanes(batch.rollingImpulse, lane, record.frictionImpulse.rolling);
             batch.anyRolling = true;
         }
 
         setLanes(batch.centerA, lane, centre - bodies.centerOfMass[a]);
         setLanes(batch.centerB, lane, centre - bodies.centerOfMass[b]);
         if (friction > 0.0f) {
-            batch.tangentImpulse1.setLane(lane, glm::dot(contact.frictionImpulse.linear, tangent1));
-            batch.tangentImpulse2.setLane(lane, glm::dot(contact.frictionImpulse.linear, tangent2));
-            batch.twistImpulse.setLane(lane, contact.frictionImpulse.twist);
+            batch.tangentImpulse1.setLane(lane, glm::dot(record.frictionImpulse.linear, tangent1));
+            batch.tangentImpulse2.setLane(lane, glm::dot(record.frictionImpulse.linear, tangent2));
+            batch.twistImpulse.setLane(lane, record.frictionImpulse.twist);
         }
         for (int i = 0; i < manifold.pointCount; ++i) {
             const ContactPoint& mp = manifold.points[i];
@@ -235,7 +237,7 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const BodyStor
             setLanes(p.anchorB, lane, anchorB);
             p.baseSeparation.setLane(lane, mp.separation);
             p.leverArm.setLane(lane, glm::length(mid - centre));
-            p.normalImpulse.setLane(lane, contact.impulses[i].normal);
+            p.normalImpulse.setLane(lane, record.impulses[i].normal);
             batchPenetration_[entry / kLanes] = std::max(batchPenetration_[entry / kLanes], -mp.separation);
             const float approach = -glm::dot(relativeVelocityAt(mid, bodies, a, b), normal);
             if (friction > 0.0f && approach > params.contact.restitutionThreshold) {
@@ -533,15 +535,15 @@ bool ContactSolver::solvePass(bool useBias, bool restricted) {
     return pushLeft;
 }
 
-void ContactSolver::storeImpulses(std::vector<Contact>& contacts) const {
+void ContactSolver::storeImpulses(ContactManager& contactManager) const {
     for (const ManifoldBatch& c : batches_) {
         for (int lane = 0; lane < kLanes; ++lane) {
             if (c.pointCount[lane] == 0) continue;
-            Contact& contact = contacts[c.contactIndex[lane]];
+            ManifoldRecord& record = contactManager.manifoldOf(contactManager.contacts()[c.contactIndex[lane]]);
             const Vec3 tangent1(c.tangent1[0].lane(lane), c.tangent1[1].lane(lane), c.tangent1[2].lane(lane));
             const Vec3 tangent2(c.tangent2[0].lane(lane), c.tangent2[1].lane(lane), c.tangent2[2].lane(lane));
-            for (int i = 0; i < c.pointCount[lane]; ++i) contact.impulses[i] = {c.points[i].normalImpulse.lane(lane)};
-            contact.frictionImpulse = {c.tangentImpulse1.lane(lane) * tangent1 + c.tangentImpulse2.lane(lane) * tangent2,
+            for (int i = 0; i < c.pointCount[lane]; ++i) record.impulses[i] = {c.points[i].normalImpulse.lane(lane)};
+            record.frictionImpulse = {c.tangentImpulse1.lane(lane) * tangent1 + c.tangentImpulse2.lane(lane) * tangent2,
                                        c.twistImpulse.lane(lane),
                                        Vec3(c.rollingImpulse[0].lane(lane), c.rollingImpulse[1].lane(lane),
                                             c.rollingImpulse[2].lane(lane))};

@@ -55,7 +55,7 @@ public:
 
     // Builds constraints for touching contacts with an awake dynamic body. Sleeping and static
     // bodies take part with infinite mass. The passes until the next prepare run on `pool`.
-    void prepare(const std::vector<Contact>& contacts, const BodyStorage& bodies, const Params& params, TaskPool& pool);
+    void prepare(const ContactManager& contactManager, const BodyStorage& bodies, const Params& params, TaskPool& pool);
     void warmStart(BodyStorage& bodies);
     // Returns whether some normal row still changed a relative velocity by more than
     // kRelaxTolerance: in a relax pass, push velocity is still being taken out.
@@ -89,7 +89,7 @@ public:
     // update (the first substep), or after the position update.
     enum class ImpactTiming { BeforePositions, AfterPositions };
     void resolveCollisions(BodyStorage& bodies, ImpactTiming timing);
-    void storeImpulses(std::vector<Contact>& contacts) const;
+    void storeImpulses(ContactManager& contactManager) const;
 
     std::size_t constraintCount() const { return constraintCount_; }
     std::size_t colorCount() const { return colorCount_; }

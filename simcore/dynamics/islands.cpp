@@ -25,7 +25,7 @@ void Islands::build(const BodyStorage& bodies, const std::vector<Contact>& conta
     std::iota(parent_.begin(), parent_.end(), 0u);
     auto isDynamic = [&bodies](std::size_t i) { return bodies.motion[i] == MotionType::Dynamic; };
     for (const Contact& contact : contacts) {
-        if (contact.manifold.pointCount == 0) continue;
+        if (!contact.hasPoints()) continue;
         const std::size_t a = bodies.denseIndexOfSlot(contact.slotA);
         const std::size_t b = bodies.denseIndexOfSlot(contact.slotB);
         if (isDynamic(a) && isDynamic(b)) unite(a, b);

@@ -254,7 +254,7 @@ void World::prepareConstraints(const StepPlan& plan) {
         params.gravity = plan.velocity.gravity;
         params.solver = settings_.solver;
         params.contact = settings_.contact;
-        contactSolver_.prepare(contactManager_.contacts(), bodies_, params, threads_.pool());
+        contactSolver_.prepare(contactManager_, bodies_, params, threads_.pool());
     }
     if (plan.joints) jointSolver_.prepare(joints_, bodies_, {plan.substepDt, settings_.joint});
     // The poses continuous collision sweeps from (it runs only with contacts, so only with this stage).
@@ -294,7 +294,7 @@ void World::storeImpulses(const StepPlan& plan, StepCounters& counters) {
     // Joints are the one source that can pass the bound within a step (a torn assembly, in its
     // last relax passes), so only they pay for holding the state between steps to it.
     if (plan.solveJoints) counters.boundedVelocities += integrator_.boundVelocities(bodies_, plan.substepDt);
-    if (plan.solveContacts) contactSolver_.storeImpulses(contactManager_.contacts());
+    if (plan.solveContacts) contactSolver_.storeImpulses(contactManager_);
 }
 
 void World::sleepRestingIslands(const StepPlan& plan) {
@@ -323,9 +323,9 @@ void World::finishStep(const StepPlan& plan, StepProfile& profile) {
     }
     counters.pairs = static_cast<std::uint32_t>(contactManager_.contacts().size());
     for (const Contact& contact : contactManager_.contacts()) {
-        if (contact.manifold.pointCount == 0) continue;
+        if (!contact.hasPoints()) continue;
         ++counters.manifolds;
-        counters.contactPoints += static_cast<std::uint32_t>(contact.manifold.pointCount);
+        counters.contactPoints += static_cast<std::uint32_t>(contactManager_.manifoldOf(contact).manifold.pointCount);
     }
     counters.islands = plan.contacts || plan.joints ? islands_.awakeIslandCount() : 0;
     profile.maxPenetration = plan.solveContacts ? contactSolver_.maxPenetration() : 0.0f;

@@ -47,7 +47,7 @@ struct ContactInfo {
     std::uint32_t subShapeA = 0, subShapeB = 0;  // the sub-shapes touching (shape.h): compound children
     float friction = 0.0f;     // combined coefficient
     float restitution = 0.0f;  // combined coefficient
-    Vec3 normal{0.0f};         // unit, world frame, from A towards B
+    Vec3 normal{0.0f};         // unit, world frame, from A towards B (zero while pointCount is 0)
     int pointCount = 0;        // 0 while the bodies' fat boxes overlap but the shapes are apart
     std::array<ContactPoint, kMaxManifoldPoints> points{};
     std::array<float, kMaxManifoldPoints> normalImpulses{};  // N s, accumulated (warm start)

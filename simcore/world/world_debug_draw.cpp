@@ -24,13 +24,15 @@ void World::draw(DebugDraw& drawer, const DebugDrawOptions& options) const {
     if (options.contacts) {
         const auto idOfSlot = [this](std::uint32_t slot) { return bodies_.idAt(bodies_.denseIndexOfSlot(slot)); };
         for (const Contact& contact : contactManager_.contacts()) {
+            if (!contact.hasPoints()) continue;
             const BodyId a = idOfSlot(contact.slotA), b = idOfSlot(contact.slotB);
-            const ContactManifold& manifold = contact.manifold;
+            const ManifoldRecord& record = contactManager_.manifoldOf(contact);
+            const ContactManifold& manifold = record.manifold;
             for (int k = 0; k < manifold.pointCount; ++k) {
                 const auto point = static_cast<std::size_t>(k);
                 const ContactPoint& p = manifold.points[point];
                 drawer.drawContactPoint({a, b, 0.5f * (p.pointA + p.pointB), manifold.normal, p.separation,
-                                         contact.impulses[point].normal, p.separation > 0.0f});
+                                         record.impulses[point].normal, p.separation > 0.0f});
             }
         }
     }

@@ -77,11 +77,13 @@ ContactInfo World::contact(std::size_t index) const {
     info.subShapeB = c.subShapeB;
     info.friction = c.friction;
     info.restitution = c.restitution;
-    info.normal = c.manifold.normal;
-    info.pointCount = c.manifold.pointCount;
-    info.points = c.manifold.points;
-    for (int k = 0; k < kMaxManifoldPoints; ++k) info.normalImpulses[k] = c.impulses[k].normal;
-    info.frictionImpulse = c.frictionImpulse.linear;
+    if (!c.hasPoints()) return info;
+    const ManifoldRecord& record = contactManager_.manifoldOf(c);
+    info.normal = record.manifold.normal;
+    info.pointCount = record.manifold.pointCount;
+    info.points = record.manifold.points;
+    for (int k = 0; k < kMaxManifoldPoints; ++k) info.normalImpulses[k] = record.impulses[k].normal;
+    info.frictionImpulse = record.frictionImpulse.linear;
     return info;
 }
 
@@ -91,9 +93,10 @@ ContactLoad World::contactLoad(BodyId id) const {
     float impulse = 0.0f;  // N s
     ContactLoad load;
     for (const Contact& c : contactManager_.contacts()) {
-        if ((c.slotA != slot && c.slotB != slot) || c.manifold.pointCount == 0) continue;
+        if ((c.slotA != slot && c.slotB != slot) || !c.hasPoints()) continue;
         ++load.contacts;
-        for (int k = 0; k < c.manifold.pointCount; ++k) impulse += c.impulses[k].normal;
+        const ManifoldRecord& record = contactManager_.manifoldOf(c);
+        for (int k = 0; k < record.manifold.pointCount; ++k) impulse += record.impulses[k].normal;
     }
     load.normalForce = impulse * static_cast<float>(settings_.substeps) / settings_.timeStep;
     return load;
