@@ -42,8 +42,7 @@ public:
     // The stage's time in a step that ran it as useWorkers said.
     void record(std::size_t stage, double ms) {
         StageState& state = states_[stage];
-        const bool probing = state.estimateMs[kInline] >= 0.0 && state.estimateMs[kWorkers] >= 0.0 &&
-                             state.stepsToProbe == 0;
+        const bool probing = state.measuredBothWays() && state.stepsToProbe == 0;
         const int way = useWorkers(stage) ? kWorkers : kInline;
         double& estimate = state.estimateMs[way];
         // A probe's time replaces the last one: averaged in, the first step's (which makes every
@@ -58,7 +57,7 @@ public:
                 state.probeInterval = std::min(2 * state.probeInterval, kMaxProbeInterval);
             }
             state.stepsToProbe = state.probeInterval;
-        } else if (state.estimateMs[kInline] >= 0.0 && state.estimateMs[kWorkers] >= 0.0) {
+        } else if (state.measuredBothWays()) {
             if (state.stepsToProbe == kNotStarted) {  // both ways measured once: the faster to start
                 state.workersChosen = state.estimateMs[kWorkers] < state.estimateMs[kInline];
                 state.stepsToProbe = state.probeInterval;
@@ -76,6 +75,7 @@ private:
         bool workersChosen = false;
         int probeInterval = kMinProbeInterval;
         int stepsToProbe = kNotStarted;  // steps the choice runs before the next probe
+        bool measuredBothWays() const { return estimateMs[kInline] >= 0.0 && estimateMs[kWorkers] >= 0.0; }
     };
     std::array<StageState, Stages> states_{};
 };

@@ -98,9 +98,11 @@ public:
     }
     // After a step: what its stages took, as they ran; outside a step the workers are on again.
     void learn(const StepProfile& profile) {
-        for (std::size_t s = 0; s < kStageCount; ++s)
-            if (profile.skipped[s] == StageSkip::Ran && pool().threadCount() > 1) tuner_.record(s, profile.stageMs[s]);
-        pool().setWorkersEnabled(true);
+        TaskPool& workers = pool();
+        if (workers.threadCount() > 1)
+            for (std::size_t s = 0; s < kStageCount; ++s)
+                if (profile.skipped[s] == StageSkip::Ran) tuner_.record(s, profile.stageMs[s]);
+        workers.setWorkersEnabled(true);
     }
 
 private:
