@@ -4,7 +4,8 @@
 // message naming the file; hull points of a part. Scenes that reference mesh files: relative
 // paths resolved from the scene's folder, round trips that keep the reference (also after saving
 // to another folder), missing, hostile and limit-breaking files refused with the path as written
-// and as resolved, and a loader without the importer saying so.
+// and as resolved, and a loader without the importer saying so. assimp is mapped into the process
+// only by the first import, not by loading a scene without mesh files.
 
 #include "simcore/io/mesh_import.h"
 #include "simcore/io/scene_io.h"
@@ -112,6 +113,13 @@ Aabb boundsOf(const ImportedMesh& mesh) {
     return box;
 }
 
+// Whether a library whose file name contains `name` is mapped into this process.
+bool isMapped(const char* name) {
+    QFile maps("/proc/self/maps");
+    if (!maps.open(QIODevice::ReadOnly)) qFatal("cannot read /proc/self/maps");
+    return maps.readAll().contains(name);
+}
+
 bool near(const Vec3& a, const Vec3& b) { return glm::length(a - b) < 1e-5f; }
 
 Vec3 normalOf(const ImportedMesh& mesh, std::size_t t) {
@@ -125,6 +133,7 @@ class TestMeshImport : public QObject {
     Q_OBJECT
 private slots:
     void init() { QVERIFY(dir.isValid()); }
+    void assimpIsMappedByTheFirstImport();  // first: no other test has imported yet
     void objBox();
     void objScaleAndUpAxis();
     void mirroringScaleKeepsFrontsOutside();
@@ -167,6 +176,23 @@ private:
     }
     QTemporaryDir dir;
 };
+
+void TestMeshImport::assimpIsMappedByTheFirstImport() {
+    QVERIFY(!isMapped("libassimp"));
+    // A scene without mesh files, loaded with the importer at hand, does not open it.
+    const QString scene = write("plain.json", R"({"format": "interplay.scene", "version": 1, "bodies": [
+        {"name": "ball", "shape": {"type": "sphere", "radius": 0.5}}]})");
+    QVERIFY(loadSceneFile(scene.toStdString(), withImporter()).ok());
+    QVERIFY(!isMapped("libassimp"));
+    // Refusals made before parsing (a missing file, an unsupported format) do not open it either.
+    QVERIFY(!importMesh(dir.filePath("absent.obj").toStdString()).ok());
+    QVERIFY(!importMeshFromMemory("x", 1, "ply", "bytes").ok());
+    QVERIFY(!isMapped("libassimp"));
+    const ImportedMesh box = importMesh(write("box.obj", kBoxObj).toStdString());
+    QVERIFY2(box.ok(), box.error.c_str());
+    QVERIFY(isMapped("libsimcore_assimp"));
+    QVERIFY(isMapped("libassimp"));
+}
 
 void TestMeshImport::objBox() {
     const auto mesh = importMesh(write("box.obj", kBoxObj).toStdString());

@@ -3,11 +3,11 @@
 #include "simcore/settings_schema.h"
 #include "simcore/shapes/convex_hull.h"
 
-#include <assimp/BaseImporter.h>
-#include <assimp/Importer.hpp>
-#include <assimp/importerdesc.h>
-#include <assimp/postprocess.h>
-#include <assimp/scene.h>
+#include "simcore/io/assimp_module.h"
+
+#include <assimp/scene.h>  // the scene's structs only: assimp's code is in the module
+
+#include <dlfcn.h>
 
 #include <algorithm>
 #include <cctype>
@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <memory>
 
 namespace simcore {
 
@@ -28,8 +29,39 @@ std::string lowercase(std::string_view text) {
     return out;
 }
 
-bool isSupported(std::string_view format) {
-    return format == "obj" || format == "stl" || format == "gltf" || format == "glb";
+using assimp_module::isSupportedFormat;
+
+// The module's entry points (assimp_module.h), looked up once, on the first import. Opening it
+// maps assimp; SIMCORE_ASSIMP_MODULE is its path in the build tree (CMakeLists.txt).
+struct AssimpModule {
+    SimcoreAssimpReadFile readFile = nullptr;
+    SimcoreAssimpReadMemory readMemory = nullptr;
+    SimcoreAssimpScene scene = nullptr;
+    SimcoreAssimpError error = nullptr;
+    SimcoreAssimpRelease release = nullptr;
+    std::string openError;  // why the module could not be used; empty when it can
+};
+
+const AssimpModule& assimpModule() {
+    static const AssimpModule module = [] {
+        AssimpModule m;
+        void* library = dlopen(SIMCORE_ASSIMP_MODULE, RTLD_NOW | RTLD_LOCAL);
+        if (!library) {
+            m.openError = dlerror();
+            return m;
+        }
+        const auto lookUp = [&](auto& entry, const char* name) {
+            entry = reinterpret_cast<std::remove_reference_t<decltype(entry)>>(dlsym(library, name));
+            if (!entry && m.openError.empty()) m.openError = std::string(SIMCORE_ASSIMP_MODULE) + " has no " + name;
+        };
+        lookUp(m.readFile, assimp_module::kReadFile);
+        lookUp(m.readMemory, assimp_module::kReadMemory);
+        lookUp(m.scene, assimp_module::kScene);
+        lookUp(m.error, assimp_module::kError);
+        lookUp(m.release, assimp_module::kRelease);
+        return m;
+    }();
+    return module;
 }
 
 // The file's up axis turned to +y: a rotation, so handedness and windings are kept.
@@ -111,29 +143,25 @@ ImportedMesh collect(const aiScene& scene, std::string_view name, const MeshImpo
     return out;
 }
 
-constexpr unsigned kPostProcess = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_SortByPType |
-                                  aiProcess_PreTransformVertices | aiProcess_ValidateDataStructure;
-
-void configure(Assimp::Importer& importer) {
-    // Points and lines are dropped by SortByPType instead of being kept as degenerate meshes.
-    importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-    // Only the readers of the supported formats stay: when the named reader fails, assimp tries
-    // every other one on the bytes, and forty parsers are forty times the surface a hostile file
-    // can reach. Unregistered readers are the caller's to delete.
-    for (std::size_t i = importer.GetImporterCount(); i-- > 0;) {
-        const aiImporterDesc* description = importer.GetImporterInfo(i);
-        const std::string extensions = description && description->mFileExtensions ? description->mFileExtensions : "";
-        bool keep = false;
-        std::size_t start = 0;
-        while (start < extensions.size()) {
-            const std::size_t end = std::min(extensions.find(' ', start), extensions.size());
-            keep = keep || isSupported(extensions.substr(start, end - start));
-            start = end + 1;
-        }
-        if (keep) continue;
-        Assimp::BaseImporter* reader = importer.GetImporter(i);
-        if (importer.UnregisterLoader(reader) == aiReturn_SUCCESS) delete reader;
+// Reads through the module and collects the triangles; `read` starts the import.
+template <typename Read>
+ImportedMesh readThroughAssimp(std::string_view name, const std::string& format, const MeshImportOptions& options,
+                               Read read) {
+    const AssimpModule& assimp = assimpModule();
+    if (!assimp.openError.empty()) {
+        ImportedMesh out;
+        out.error = std::string(name) + ": cannot be read: the mesh importer is missing (" + assimp.openError + ")";
+        return out;
     }
+    const std::unique_ptr<SimcoreAssimpImport, SimcoreAssimpRelease> import(read(assimp), assimp.release);
+    const aiScene* scene = assimp.scene(import.get());
+    if (!scene) {
+        ImportedMesh out;
+        const std::string why = assimp.error(import.get());
+        out.error = std::string(name) + ": cannot be read as " + format + (why.empty() ? "" : " (" + why + ")");
+        return out;
+    }
+    return collect(*scene, name, options);
 }
 
 // A binary glTF states its own length and each chunk's: assimp 5.2 believes them and allocates
@@ -179,7 +207,7 @@ ImportedMesh importMeshFromMemory(const void* data, std::size_t size, std::strin
     ImportedMesh out;
     const std::string prefix = std::string(name) + ": ";
     const std::string fmt = lowercase(format);
-    if (!isSupported(fmt)) {
+    if (!isSupportedFormat(fmt)) {
         out.error = prefix + "unsupported format \"" + fmt + "\" (use " + std::string(kSupportedFormats) + ")";
         return out;
     }
@@ -200,15 +228,9 @@ ImportedMesh importMeshFromMemory(const void* data, std::size_t size, std::strin
         out.error = prefix + problem;
         return out;
     }
-    Assimp::Importer importer;
-    configure(importer);
-    const aiScene* scene = importer.ReadFileFromMemory(data, size, kPostProcess, fmt.c_str());
-    if (!scene || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE)) {
-        const std::string why = importer.GetErrorString();
-        out.error = prefix + "cannot be read as " + fmt + (why.empty() ? "" : " (" + why + ")");
-        return out;
-    }
-    return collect(*scene, name, options);
+    return readThroughAssimp(name, fmt, options, [&](const AssimpModule& assimp) {
+        return assimp.readMemory(data, size, fmt.c_str());
+    });
 }
 
 ImportedMesh importMesh(const std::filesystem::path& file, const MeshImportOptions& options) {
@@ -224,7 +246,7 @@ ImportedMesh importMesh(const std::filesystem::path& file, const MeshImportOptio
         return out;
     }
     const std::string format = lowercase(file.extension().string().substr(file.extension().empty() ? 0 : 1));
-    if (!isSupported(format)) {
+    if (!isSupportedFormat(format)) {
         out.error = name + ": unsupported format \"" + file.extension().string() + "\" (use " +
                     std::string(kSupportedFormats) + ")";
         return out;
@@ -261,15 +283,8 @@ ImportedMesh importMesh(const std::filesystem::path& file, const MeshImportOptio
         }
     }
     // Through assimp's file system, so a .gltf can name buffers beside it.
-    Assimp::Importer importer;
-    configure(importer);
-    const aiScene* scene = importer.ReadFile(name, kPostProcess);
-    if (!scene || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE)) {
-        const std::string why = importer.GetErrorString();
-        out.error = name + ": cannot be read as " + format + (why.empty() ? "" : " (" + why + ")");
-        return out;
-    }
-    return collect(*scene, name, options);
+    return readThroughAssimp(name, format, options,
+                             [&](const AssimpModule& assimp) { return assimp.readFile(name.c_str()); });
 }
 
 TriangleMesh::BuildResult importTriangleMesh(const std::filesystem::path& file, const MeshImportOptions& options) {

@@ -6,7 +6,8 @@
 // This is its own library, simcore_import, so that simcore itself keeps no dependency beyond GLM
 // (and nlohmann-json inside its loader): the engine, its tests and the fuzzers of the scene format
 // build without assimp, and only what imports files (the editor, the runner, the scene loader once
-// it resolves "file" meshes) links it.
+// it resolves "file" meshes) links it. assimp itself is opened on the first import
+// (assimp_module.h), so a program that reads no mesh file does not carry it.
 //
 // Conventions: the result is in simcore's frame, +y up. A file whose up axis is +z (most CAD and
 // STL files, Blender's default export without conversion) or +x is turned so that axis becomes +y,
