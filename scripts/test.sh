@@ -25,8 +25,8 @@ stage() {  # stage NAME COMMAND...: runs it, its output to the terminal and to $
     local status=${PIPESTATUS[0]}
     [ "$status" -eq 0 ] || failed_stages+=("$name")
 }
-# The suites are independent processes, run one per core (windowed ones take turns: RESOURCE_LOCK
-# xvfb in tests/CMakeLists.txt); ctest reads this in both stages.
+# The suites are independent processes, run one per core (windowed ones each on an X server of its
+# own: tests/support/with-xvfb.sh); ctest reads this in every stage.
 export CTEST_PARALLEL_LEVEL="${CTEST_PARALLEL_LEVEL:-$(nproc)}"
 stage release ctest --test-dir "$root/build" --output-on-failure --timeout 900
 stage sanitizers "$root/scripts/test-sanitizers.sh"
