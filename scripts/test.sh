@@ -15,14 +15,17 @@ logs="$(mktemp -d)"
 trap 'rm -rf "$logs"' EXIT
 
 "$root/scripts/build.sh" || exit 1
+stage_times=("install and Release build $SECONDS s")  # each stage's wall time, for the summary
 
 failed_stages=()
 stage() {  # stage NAME COMMAND...: runs it, its output to the terminal and to $logs/NAME
     local name="$1"
     shift
     echo "== $name"
+    local start=$SECONDS
     "$@" 2>&1 | tee "$logs/$name"
     local status=${PIPESTATUS[0]}
+    stage_times+=("$name $((SECONDS - start)) s")
     [ "$status" -eq 0 ] || failed_stages+=("$name")
 }
 # The suites are independent processes, run one per core (windowed ones each on an X server of its
@@ -47,5 +50,7 @@ echo "Release: $rp passed, $rf failed; ASan+UBSan: $ap passed, $af failed; TSan:
 if [ ${#failed_stages[@]} -gt 0 ]; then
     echo "failed stages: ${failed_stages[*]}"
 fi
+printf -v times '%s, ' "${stage_times[@]}"
+echo "wall time: ${times}total $SECONDS s"
 echo "all: $((rp + ap + tp + fp)) passed, $((rf + af + tf + ff)) failed"
 [ ${#failed_stages[@]} -eq 0 ]
