@@ -20,10 +20,9 @@ namespace simcore {
 
 namespace {
 
-// Feature choice and alignment tolerances. The solver tolerates a few millimetres of slop, so a
-// feature only wins over a face when it is clearly better; this keeps resting stacks on stable
-// face contacts instead of flickering to edge contacts from round-off.
-constexpr float kLinearSlop = 0.005f;                 // m
+// Feature choice and alignment tolerances. The solver tolerates a few millimetres of slop
+// (kLinearSlop), so a feature only wins over a face when it is clearly better; this keeps resting
+// stacks on stable face contacts instead of flickering to edge contacts from round-off.
 constexpr float kEdgeRelativeTolerance = 0.05f;       // edge must beat the best face by 5% of it...
 constexpr float kEdgeAbsoluteTolerance = 0.5f * kLinearSlop;  // ...plus this
 constexpr float kFaceRelativeTolerance = 0.02f;       // B's face must beat A's face by 2% (plus this)
@@ -40,19 +39,10 @@ constexpr int kCylinderCapPoints = 8;
 
 // ---- Contact candidates and manifold reduction --------------------------------------------------
 
-// Plain data without initialisers: the candidate buffer below is written before it is read, so
-// constructing a Contacts costs nothing (no 2 KB zero fill per call).
-struct Candidate {
-    Vec3 pointA;
-    Vec3 pointB;
-    float separation;
-    std::uint32_t featureId;
-};
-
 struct Contacts {
     Vec3 normal{0.0f, 1.0f, 0.0f};
     int count = 0;
-    Candidate items[kMaxClipVertices];
+    ContactCandidate items[kMaxClipVertices];  // written before they are read: no 2 KB zero fill per call
 
     Contacts() = default;
     Contacts(const Contacts& other) : normal(other.normal), count(other.count) {
@@ -75,71 +65,6 @@ struct Contacts {
         return deepest;
     }
 };
-
-// Keeps at most four candidates spanning the largest area: one deep point, the farthest from it, the
-// one maximising the triangle, then the one adding the most area to it. Areas are signed, measured
-// in the contact plane.
-//
-// The choice must not flicker from step to step, or the warm start is lost and the support polygon
-// jumps: a cap of 8 rim points rocking on another chose a different 4 of them whenever the deepest
-// changed by a micrometre, and a stack of 10 cylinders never came to rest. So a candidate replaces
-// the one already chosen only when it is better by a margin (kChoiceMargin of depth, kChoiceRatio of
-// a distance or an area): near-ties go to the earlier candidate, whose order follows the features.
-void reduceToManifold(const Contacts& contacts, ContactManifold& out) {
-    out.normal = contacts.normal;
-    out.pointCount = 0;
-    const auto keep = [&](int i) {
-        const Candidate& c = contacts.items[i];
-        out.points[out.pointCount++] = {c.pointA, c.pointB, c.separation, c.featureId};
-    };
-    if (contacts.count <= kMaxManifoldPoints) {
-        for (int i = 0; i < contacts.count; ++i) keep(i);
-        return;
-    }
-    constexpr float kChoiceMargin = 0.2f * kLinearSlop;  // m
-    constexpr float kChoiceRatio = 1.05f;
-    const Vec3& n = contacts.normal;
-    const auto at = [&](int i) { return contacts.items[i].pointA; };
-
-    int first = 0;
-    for (int i = 1; i < contacts.count; ++i) {
-        if (contacts.items[i].separation < contacts.items[first].separation - kChoiceMargin) first = i;
-    }
-    int second = -1;
-    float farthest = -1.0f;
-    for (int i = 0; i < contacts.count; ++i) {
-        const float d2 = lengthSquared(at(i) - at(first));
-        if (d2 > kChoiceRatio * farthest) farthest = d2, second = i;
-    }
-    keep(first);
-    if (farthest <= 1e-12f) return;  // all candidates coincide
-    keep(second);
-
-    int third = -1;
-    float triangleArea = 0.0f;  // signed, twice the area
-    for (int i = 0; i < contacts.count; ++i) {
-        const float area = glm::dot(glm::cross(at(second) - at(first), at(i) - at(first)), n);
-        if (std::abs(area) > kChoiceRatio * std::abs(triangleArea)) triangleArea = area, third = i;
-    }
-    if (third < 0 || std::abs(triangleArea) <= 1e-9f) return;  // collinear
-    keep(third);
-
-    // The fourth point lies outside one triangle edge; the area it adds is how negative its signed
-    // area against that edge is (with the triangle oriented counter-clockwise about n).
-    const float orientation = triangleArea > 0.0f ? 1.0f : -1.0f;
-    const std::array<int, 3> corners{first, second, third};
-    int fourth = -1;
-    float addedArea = -1e-9f;
-    for (int i = 0; i < contacts.count; ++i) {
-        for (int e = 0; e < 3; ++e) {
-            const Vec3 p = at(corners[e]);
-            const Vec3 q = at(corners[(e + 1) % 3]);
-            const float area = orientation * glm::dot(glm::cross(q - p, at(i) - p), n);
-            if (area < kChoiceRatio * addedArea) addedArea = area, fourth = i;
-        }
-    }
-    if (fourth >= 0) keep(fourth);
-}
 
 // ---- Small geometry ------------------------------------------------------------------------------
 
@@ -1170,7 +1095,8 @@ bool collideShapes(const Shape& a, const Transform& ta, const Shape& b, const Tr
     } else {
         entry.routine(a, ta, b, tb, speculativeDistance, contacts);
     }
-    reduceToManifold(contacts, out);
+    out.normal = contacts.normal;
+    reduceToManifold(contacts.items, contacts.count, contacts.normal, out);
     return out.pointCount > 0;
 }
 

@@ -11,6 +11,9 @@
 namespace simcore {
 
 constexpr int kMaxManifoldPoints = 4;
+// Depth differences the solver does not resolve (m): the narrow phase's choices between features
+// and points are made against fractions of it, so round-off does not flip them.
+constexpr float kLinearSlop = 0.005f;
 
 struct ContactPoint {
     Vec3 pointA{0.0f};         // on A's surface, world frame (m)
@@ -24,5 +27,18 @@ struct ContactManifold {
     std::array<ContactPoint, kMaxManifoldPoints> points{};
     int pointCount = 0;
 };
+
+// A contact point before reduction, as ContactPoint. Plain data without initialisers: the narrow
+// phase's buffers of them (up to 64 points) are written before they are read, so making one costs
+// nothing.
+struct ContactCandidate {
+    Vec3 pointA, pointB;
+    float separation;
+    std::uint32_t featureId;
+};
+
+// Keeps at most kMaxManifoldPoints of `count` candidates as `out`'s points (its normal is left as
+// it is), spanning the largest area in the plane of `normal`.
+void reduceToManifold(const ContactCandidate* candidates, int count, const Vec3& normal, ContactManifold& out);
 
 }  // namespace simcore
