@@ -11,8 +11,10 @@
 namespace simcore {
 
 constexpr int kMaxManifoldPoints = 4;
-// Depth differences the solver does not resolve (m): the narrow phase's choices between features
-// and points are made against fractions of it, so round-off does not flip them.
+// The narrow phase's scale for depth differences that do not matter (m): its choices between
+// features and points are made against fractions of it, so round-off does not flip them. It is
+// fixed, not the solver's settings.contact.linearSlop (also 5 mm by default), so the manifolds do
+// not change with that setting.
 constexpr float kLinearSlop = 0.005f;
 
 struct ContactPoint {
