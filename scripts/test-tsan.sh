@@ -1,13 +1,13 @@
 #!/usr/bin/env bash
-# Builds the engine, the runner and every suite that needs no window with ThreadSanitizer (clang,
-# into build-tsan/) and runs them: the same suites as the ASan + UBSan stage. The build sets the
-# default of WorldSettings::threads to 4 (SIMCORE_DEFAULT_THREADS), so every world the suites make,
-# in code or from a scene file without "threads", steps its parallel stages on a pool of 3 workers
-# and the caller; test_threads also runs 2 and 4 threads against 1 bit for bit. The first report
-# ends the run and fails it. Left out: the editor (not built here; its suites run in the Release
-# stage) and the long stability suite (label long: minutes in Release, far longer here).
-# Measured on a clean build-tsan/, the 2-core machine shared (load 4-6.5, 2026-12-03): 9 min 40 s,
-# the build 3 min 57 s and the 39 suites 5 min 36 s, two at a time (docs/testing.md, "Reliability").
+# Builds the engine, the runner and every suite that needs no window and starts threads with
+# ThreadSanitizer (clang, into build-tsan/) and runs them: the ASan + UBSan stage's suites but the
+# eight marked THREADLESS in tests/CMakeLists.txt (shapes, hulls, GJK/EPA, shape pairs, ray casts,
+# meshes, the broad phase, mesh import: single-threaded code). The build sets the default of
+# WorldSettings::threads to 4 (SIMCORE_DEFAULT_THREADS), so every world the suites make, in code or
+# from a scene file without "threads", steps its parallel stages on a pool of 3 workers and the
+# caller; test_threads also runs 2 and 4 threads against 1 bit for bit. The first report ends the
+# run and fails it. Left out: the editor (not built here; its suites run in the Release stage) and
+# the long stability suite (label long: minutes in Release, far longer here).
 #   ./scripts/test-tsan.sh [CTEST ARGS...]     e.g. -R test_threads
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -20,7 +20,7 @@ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only" \
     -DCMAKE_CXX_FLAGS="-fsanitize=thread" \
     -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=thread" \
-    -DSIMCORE_DEFAULT_THREADS=4 -DINTERPLAY_BENCH=OFF -DINTERPLAY_EDITOR=OFF >/dev/null
+    -DSIMCORE_DEFAULT_THREADS=4 -DINTERPLAY_BENCH=OFF -DINTERPLAY_EDITOR=OFF -DINTERPLAY_THREADLESS_SUITES=OFF >/dev/null
 cmake --build "$build"
 export TSAN_OPTIONS="halt_on_error=1:abort_on_error=1:second_deadlock_stack=1:suppressions=$root/scripts/tsan.supp"
 # Qt Test's crash handler forks a debugger from the signal handler, which deadlocks in the sanitizer's

@@ -3,8 +3,8 @@
 #   1. the ctest suites, Release (build/);
 #   2. the same suites under AddressSanitizer + UndefinedBehaviorSanitizer (scripts/test-sanitizers.sh,
 #      build-asan/);
-#   3. the same suites under ThreadSanitizer, every world on 4 threads (scripts/test-tsan.sh, build-tsan/;
-#      its build and run took 9 min 40 s alone on the shared 2-core machine, 2026-12-03: docs/testing.md);
+#   3. those of them that start threads under ThreadSanitizer, every world on 4 threads
+#      (scripts/test-tsan.sh, build-tsan/);
 #   4. a short libFuzzer run of every fuzz target (scripts/fuzz.sh; FUZZ_SECONDS=N per target, default 30
 #      here, 60 when fuzz.sh runs alone).
 # Every stage runs even when an earlier one fails, so one run shows every failure; the exit code is
