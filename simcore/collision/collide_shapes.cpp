@@ -1095,7 +1095,6 @@ bool collideShapes(const Shape& a, const Transform& ta, const Shape& b, const Tr
     } else {
         entry.routine(a, ta, b, tb, speculativeDistance, contacts);
     }
-    out.normal = contacts.normal;
     reduceToManifold(contacts.items, contacts.count, contacts.normal, out);
     return out.pointCount > 0;
 }

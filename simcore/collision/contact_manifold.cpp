@@ -17,6 +17,7 @@ namespace simcore {
 // face's vertices whose centre sat 5 cm off the face's (gaps of 6, 8, 8 and 10 sides), and a stack
 // of 30 such wheels toppled, each joint tilted towards its quad's centre.
 void reduceToManifold(const ContactCandidate* candidates, int count, const Vec3& normal, ContactManifold& out) {
+    out.normal = normal;
     out.pointCount = 0;
     const auto keep = [&](int i) {
         const ContactCandidate& c = candidates[i];

@@ -39,8 +39,8 @@ struct ContactCandidate {
     std::uint32_t featureId;
 };
 
-// Keeps at most kMaxManifoldPoints of `count` candidates as `out`'s points (its normal is left as
-// it is), spanning the largest area in the plane of `normal`.
+// Makes `out` the manifold of `count` candidates sharing `normal`: at most kMaxManifoldPoints of
+// them, spanning the largest area in the plane of the normal.
 void reduceToManifold(const ContactCandidate* candidates, int count, const Vec3& normal, ContactManifold& out);
 
 }  // namespace simcore
