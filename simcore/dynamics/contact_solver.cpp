@@ -138,14 +138,7 @@ void ContactSolver::prepare(const ContactManager& contactManager, const BodyStor
         if (perColor[color] > 0) ++colorCount_;
     }
     colorFirstBatch_[kOverflow + 1] = batchCount;
-    batches_.assign(batchCount, ManifoldBatch{});
-    // Every lane writes back to its batch's scratch row (after the solver bodies' rows) unless it
-    // has a moving body, set below.
-    for (std::size_t k = 0; k < batches_.size(); ++k) {
-        const auto scratchRow = static_cast<std::int32_t>(references_.size() + k);
-        std::fill(std::begin(batches_[k].storeA), std::end(batches_[k].storeA), scratchRow);
-        std::fill(std::begin(batches_[k].storeB), std::end(batches_[k].storeB), scratchRow);
-    }
+    batches_.resize(batchCount);  // cleared below, batch by batch in parallel (megabytes in pyramid20)
 
     // Which constraint fills each lane (in order_), so that the batches can be filled side by side.
     laneConstraint_.assign(batches_.size() * kLanes, kNoConstraint);
@@ -160,6 +153,15 @@ void ContactSolver::prepare(const ContactManager& contactManager, const BodyStor
     // parallel. Every solver body exists by now, so solverBody only looks them up.
     batchPenetration_.assign(batches_.size(), 0.0f);
     pool.parallelFor(batches_.size(), kBatchGrain, [&](std::size_t, std::size_t beginBatch, std::size_t endBatch) {
+    for (std::size_t k = beginBatch; k < endBatch; ++k) {
+        // Every lane writes back to its batch's scratch row (after the solver bodies' rows) unless
+        // it has a moving body, set below.
+        ManifoldBatch& batch = batches_[k];
+        batch = ManifoldBatch{};
+        const auto scratchRow = static_cast<std::int32_t>(references_.size() + k);
+        std::fill(std::begin(batch.storeA), std::end(batch.storeA), scratchRow);
+        std::fill(std::begin(batch.storeB), std::end(batch.storeB), scratchRow);
+    }
     for (std::size_t entry = beginBatch * kLanes; entry < endBatch * kLanes; ++entry) {
         if (laneConstraint_[entry] == kNoConstraint) continue;
         const std::uint32_t ci = order_[laneConstraint_[entry]];
@@ -535,8 +537,11 @@ bool ContactSolver::solvePass(bool useBias, bool restricted) {
     return pushLeft;
 }
 
+// Each lane writes its own manifold's record: batches may run side by side in any order.
 void ContactSolver::storeImpulses(ContactManager& contactManager) const {
-    for (const ManifoldBatch& c : batches_) {
+    pool_->parallelFor(batches_.size(), kBatchGrain, [&](std::size_t, std::size_t beginBatch, std::size_t endBatch) {
+    for (std::size_t k = beginBatch; k < endBatch; ++k) {
+        const ManifoldBatch& c = batches_[k];
         for (int lane = 0; lane < kLanes; ++lane) {
             if (c.pointCount[lane] == 0) continue;
             ManifoldRecord& record = contactManager.manifoldOf(contactManager.contacts()[c.contactIndex[lane]]);
@@ -549,6 +554,7 @@ void ContactSolver::storeImpulses(ContactManager& contactManager) const {
                                             c.rollingImpulse[2].lane(lane))};
         }
     }
+    });
 }
 
 }  // namespace simcore
