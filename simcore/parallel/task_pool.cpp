@@ -13,10 +13,16 @@ namespace {
 // How long an idle worker keeps looking for the next job before it sleeps. Within a step, jobs
 // follow each other within microseconds (a colour of the solver is one): a worker woken through
 // the condition variable for each took longer to start than the job took (pyramid10: 2 threads
-// 1.3x slower than 1 on an idle machine). Between steps the serial stages take far longer, and a
-// longer spin (50 us) only burnt the time slices a loaded machine gives the process (pyramid10 at
-// load 16: 2 threads 12 ms a step against 4 ms with 10 us).
+// 1.3x slower than 1 on an idle machine). Spinning on the core for longer (50 us) burnt the time
+// slices a loaded machine gives the process (pyramid10 at load 16: 2 threads 12 ms a step against
+// 4 ms with 10 us), so after kSpinTime a worker keeps looking between yields, which hand the core
+// to any other thread that wants it, and sleeps only after kYieldTime. The serial stages between
+// a step's parallel ones (pairs, islands, integration kept inline) outlast 10 us: a worker that
+// slept through them woke too late for the next stage's first jobs (2026-12-04, 2-core EPYC, 2
+// threads against 1: pyramid10 1.43x -> 1.48x, mixed1k 1.14x -> 1.39x, pile1k 1.29x -> 1.36x;
+// under 8 and 16 busy processes no slower than sleeping after 10 us).
 constexpr auto kSpinTime = std::chrono::microseconds(10);
+constexpr auto kYieldTime = std::chrono::microseconds(200);
 // A thread waiting for the workers of its job yields after this many pauses: a worker that was
 // descheduled in the middle of a chunk then gets the core back sooner on a busy machine.
 constexpr int kPausesBeforeYield = 64;
@@ -86,12 +92,21 @@ void TaskPool::runChunks(int participant) {
 }
 
 std::uint64_t TaskPool::awaitGeneration(std::uint64_t seen) {
-    const auto spinUntil = std::chrono::steady_clock::now() + kSpinTime;
+    const auto start = std::chrono::steady_clock::now();
+    const auto spinUntil = start + kSpinTime, yieldUntil = start + kYieldTime;
+    bool yielding = false;
     for (int spins = 0;; ++spins) {
         const std::uint64_t generation = generation_.load();
         if (generation != seen || stopping_.load()) return generation;
-        if (spins % 16 == 15 && std::chrono::steady_clock::now() > spinUntil) break;
-        pause(0);
+        if (spins % 16 == 15) {
+            const auto now = std::chrono::steady_clock::now();
+            if (now > yieldUntil) break;
+            yielding = now > spinUntil;
+        }
+        if (yielding)
+            std::this_thread::yield();
+        else
+            pause(0);
     }
     std::unique_lock lock(mutex_);
     sleepingWorkers_.fetch_add(1);  // before the check: run() either sees it or is seen by it

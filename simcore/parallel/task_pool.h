@@ -4,8 +4,8 @@
 // a chunk varies from call to call, the chunks do not, so a stage whose chunks write disjoint data
 // and whose reductions are combined in chunk order gives the same bits for any thread count.
 //
-// Idle workers spin briefly (the jobs of a step come microseconds apart), then sleep on a condition
-// variable until the next job. One pool runs one parallelFor at a time and a call returns only
+// Idle workers spin briefly (the jobs of a step come microseconds apart), then look between
+// yields for a while, then sleep on a condition variable until the next job. One pool runs one parallelFor at a time and a call returns only
 // when every chunk has run. It allocates when created (and parallelSum when a range has more chunks than ever before), never
 // otherwise, so a step in steady state allocates nothing.
 
@@ -81,8 +81,8 @@ private:
     // Takes chunks of the current job until none is left: first from the participant's own share,
     // then from the others'.
     void runChunks(int participant);
-    // Waits until generation_ differs from `seen` (or the pool stops): spinning first, since a
-    // step's jobs follow each other within microseconds, then asleep. Returns the generation.
+    // Waits until generation_ differs from `seen` (or the pool stops): spinning and yielding first,
+    // since a step's jobs follow each other within microseconds, then asleep. Returns the generation.
     std::uint64_t awaitGeneration(std::uint64_t seen);
 
     std::vector<std::thread> workers_;
