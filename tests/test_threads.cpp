@@ -1,5 +1,5 @@
 // The task pool and the multi-threaded step: the pool splits work into fixed chunks and runs every
-// one exactly once, waking workers that went to sleep; the tuner that picks, per stage, whether the
+// one exactly once, phases of a job in order, waking workers that went to sleep; the tuner that picks, per stage, whether the
 // workers run it learns the faster way from timings and keeps checking; a world gives the same bits for 1, 2 and 4 threads on every benchmark scene and
 // on jointed scenes (bodies and contacts compared after every step); and a step with worker
 // threads allocates nothing once the contact set is steady.
@@ -95,6 +95,8 @@ private slots:
     void poolRunsEveryChunkOnce_data();
     void poolRunsEveryChunkOnce();
     void poolSumsInChunkOrder();
+    void poolPhasesRunInOrder_data();
+    void poolPhasesRunInOrder();
     void poolWakesSleepingWorkers();
     void poolWithWorkersOffRunsOnTheCallerInOrder();
     void tunerTriesBothWaysThenRunsTheFaster_data();
@@ -153,6 +155,58 @@ void TestThreads::poolSumsInChunkOrder() {
             return s;
         });
         QCOMPARE(sum, std::uint64_t{1000 * 1001 / 2});
+    }
+}
+
+void TestThreads::poolPhasesRunInOrder_data() {
+    QTest::addColumn<int>("threads");
+    QTest::addColumn<bool>("workersOn");
+    QTest::newRow("inline, one thread") << 1 << true;
+    QTest::newRow("two threads") << 2 << true;
+    QTest::newRow("four threads") << 4 << true;
+    QTest::newRow("four threads, workers off") << 4 << false;
+}
+
+// Phase q reads what phase q - 1 wrote (as a solver colour reads the bodies the colour before
+// moved): each value must be the previous phase's plus one, so a chunk that started before the
+// phase before it finished, or ran twice, or not at all, shows. Phases of every size, empty
+// ones among them, and more phases than the pool has seen before.
+void TestThreads::poolPhasesRunInOrder() {
+    QFETCH(int, threads);
+    QFETCH(bool, workersOn);
+    TaskPool pool(threads);
+    pool.setWorkersEnabled(workersOn);
+    constexpr std::size_t kGrain = 4, kWidth = 40;
+    for (int round = 0; round < 30; ++round) {
+        const std::size_t phases = 1 + static_cast<std::size_t>(round) % 12;
+        // Phase sizes 0..kWidth: some phases have no work, some one chunk, some many.
+        auto phaseSize = [&](std::size_t q) { return (q * 13 + static_cast<std::size_t>(round)) % (kWidth + 1); };
+        std::vector<std::atomic<int>> value(kWidth);  // index i: the last phase that wrote it, plus one
+        std::vector<std::atomic<int>> visits(phases * kWidth);
+        std::atomic<bool> readStale{false};
+        const std::uint64_t sum = pool.parallelSumInPhases(
+            phases, kGrain, phaseSize, [&](std::size_t q, std::size_t begin, std::size_t end) {
+                std::uint64_t count = 0;
+                for (std::size_t i = begin; i < end; ++i) {
+                    visits[q * kWidth + i].fetch_add(1);
+                    // Every index below this phase's size was written by each earlier phase as
+                    // large; the value is the number of phases so far that covered it.
+                    int expected = 0;
+                    for (std::size_t p = 0; p < q; ++p) expected += i < phaseSize(p) ? 1 : 0;
+                    if (value[i].load() != expected) readStale.store(true);
+                    value[i].fetch_add(1);
+                    count += i + 1;
+                }
+                return count;
+            });
+        QVERIFY(!readStale.load());
+        std::uint64_t expectedSum = 0;
+        for (std::size_t q = 0; q < phases; ++q)
+            for (std::size_t i = 0; i < kWidth; ++i) {
+                QCOMPARE(visits[q * kWidth + i].load(), i < phaseSize(q) ? 1 : 0);
+                if (i < phaseSize(q)) expectedSum += i + 1;
+            }
+        QCOMPARE(sum, expectedSum);
     }
 }
 

@@ -43,9 +43,16 @@ void pause(int spins) {
 
 TaskPool::TaskPool(int threads) {
     const int total = threads > 0 ? threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-    shares_ = std::vector<Share>(static_cast<std::size_t>(total));
+    chunksRun_ = std::vector<ChunksRun>(static_cast<std::size_t>(total));
+    growPhases(1);
     workers_.reserve(static_cast<std::size_t>(total - 1));
     for (int i = 1; i < total; ++i) workers_.emplace_back([this, i] { workerLoop(i); });
+}
+
+void TaskPool::growPhases(std::size_t phases) {
+    phaseSize_.resize(phases);
+    phaseFirstChunk_.resize(phases + 1, 0);
+    shares_ = std::vector<Share>(phases * chunksRun_.size());
 }
 
 TaskPool::~TaskPool() {
@@ -61,11 +68,16 @@ TaskPool::~TaskPool() {
 // that joined and may still be running a chunk of it (its body lives on the caller's stack).
 void TaskPool::run(const Job& job) {
     job_ = job;
-    const std::size_t participants = shares_.size();
-    for (std::size_t p = 0; p < participants; ++p) {
-        shares_[p].next.store(job.chunks * p / participants, std::memory_order_relaxed);
-        shares_[p].end = job.chunks * (p + 1) / participants;
+    const std::size_t participants = chunksRun_.size();
+    for (std::size_t q = 0; q < job.phases; ++q) {
+        const std::size_t first = phaseFirstChunk_[q], chunks = phaseFirstChunk_[q + 1] - first;
+        for (std::size_t p = 0; p < participants; ++p) {
+            Share& share = shares_[q * participants + p];
+            share.next.store(first + chunks * p / participants, std::memory_order_relaxed);
+            share.end = first + chunks * (p + 1) / participants;
+        }
     }
+    for (ChunksRun& run : chunksRun_) run.count.store(0, std::memory_order_relaxed);
     generation_.fetch_add(1);  // odd: open; publishes job_ to the workers that see it
     // One wake-up call until a worker answers it: a job every few microseconds would otherwise make
     // a system call each while the workers take tens of microseconds to wake (a stage the tuner
@@ -79,14 +91,29 @@ void TaskPool::run(const Job& job) {
     for (int spins = 0; busyWorkers_.load() > 0; ++spins) pause(spins);
 }
 
+// A worker that joins late goes through the phases already done, finding no chunk left in them.
 void TaskPool::runChunks(int participant) {
     const Job& job = job_;
-    const std::size_t participants = shares_.size();
-    for (std::size_t i = 0; i < participants; ++i) {
-        Share& share = shares_[(static_cast<std::size_t>(participant) + i) % participants];
-        for (std::size_t k = share.next.fetch_add(1, std::memory_order_relaxed); k < share.end;
-             k = share.next.fetch_add(1, std::memory_order_relaxed)) {
-            job.call(job.context, k, k * job.grain, std::min(job.count, (k + 1) * job.grain));
+    const std::size_t participants = chunksRun_.size();
+    std::size_t ran = 0;
+    for (std::size_t q = 0; q < job.phases; ++q) {
+        const std::size_t first = phaseFirstChunk_[q];
+        for (std::size_t i = 0; i < participants; ++i) {
+            Share& share = shares_[q * participants + (static_cast<std::size_t>(participant) + i) % participants];
+            for (std::size_t k = share.next.fetch_add(1, std::memory_order_relaxed); k < share.end;
+                 k = share.next.fetch_add(1, std::memory_order_relaxed), ++ran) {
+                const std::size_t chunk = k - first;
+                job.call(job.context, q, chunk, chunk * job.grain, std::min(phaseSize_[q], (chunk + 1) * job.grain));
+            }
+        }
+        // The next phase may read what this one wrote: wait for the others' chunks of it.
+        chunksRun_[static_cast<std::size_t>(participant)].count.store(ran, std::memory_order_release);
+        const std::size_t phaseEnd = phaseFirstChunk_[q + 1];
+        for (int spins = 0;; ++spins) {
+            std::size_t done = 0;
+            for (const ChunksRun& run : chunksRun_) done += run.count.load(std::memory_order_acquire);
+            if (done >= phaseEnd) break;
+            pause(spins);
         }
     }
 }

@@ -4,10 +4,14 @@
 // a chunk varies from call to call, the chunks do not, so a stage whose chunks write disjoint data
 // and whose reductions are combined in chunk order gives the same bits for any thread count.
 //
+// parallelSumInPhases runs several such ranges one after another as a single job, for passes whose
+// pieces depend on the piece before (the solver's colours).
+//
 // Idle workers spin briefly (the jobs of a step come microseconds apart), then look between
-// yields for a while, then sleep on a condition variable until the next job. One pool runs one parallelFor at a time and a call returns only
-// when every chunk has run. It allocates when created (and parallelSum when a range has more chunks than ever before), never
-// otherwise, so a step in steady state allocates nothing.
+// yields for a while, then sleep on a condition variable until the next job. One pool runs one
+// job at a time and a call returns only when every chunk has run. It allocates when created (and
+// parallelSum when a job has more chunks or phases than ever before), never otherwise, so a step
+// in steady state allocates nothing.
 
 #include <algorithm>
 #include <atomic>
@@ -48,10 +52,12 @@ public:
             for (std::size_t k = 0; k < chunks; ++k) body(k, k * grain, std::min(count, (k + 1) * grain));
             return;
         }
-        auto call = [](void* context, std::size_t chunk, std::size_t begin, std::size_t end) {
+        auto call = [](void* context, std::size_t, std::size_t chunk, std::size_t begin, std::size_t end) {
             (*static_cast<Body*>(context))(chunk, begin, end);
         };
-        run({call, &body, count, grain, chunks});
+        phaseSize_[0] = count;
+        phaseFirstChunk_[1] = chunks;
+        run({call, &body, grain, 1});
     }
 
     // Sums count(begin, end) over the chunks of [0, count), as parallelFor runs them; the chunks'
@@ -59,23 +65,54 @@ public:
     // is never a shared variable that threads race on).
     template <class Count>
     std::uint64_t parallelSum(std::size_t count, std::size_t grain, Count&& countChunk) {
-        const std::size_t chunks = chunkCount(count, grain);
+        return parallelSumInPhases(1, grain, [count](std::size_t) { return count; },
+                                   [&](std::size_t, std::size_t begin, std::size_t end) { return countChunk(begin, end); });
+    }
+
+    // parallelSum over [0, phaseSize(q)) with countChunk(q, begin, end) for the phases q = 0, 1, ...
+    // in turn, as one job: no chunk of a phase starts before every chunk of the phase before has
+    // finished, so a phase may read what the one before wrote. The sum adds the phases' chunks in
+    // order. Between phases a participant only waits for the others' chunks, where a parallelFor
+    // per phase hands a new job to the workers and waits for them to leave the last: a solver
+    // colour takes a few microseconds, and that hand-over was a fifth of it.
+    template <class Size, class Count>
+    std::uint64_t parallelSumInPhases(std::size_t phases, std::size_t grain, Size&& phaseSize, Count&& countChunk) {
+        if (phaseSize_.size() < phases) growPhases(phases);  // only when the work grew
+        std::size_t chunks = 0;
+        for (std::size_t q = 0; q < phases; ++q) {
+            phaseSize_[q] = phaseSize(q);
+            phaseFirstChunk_[q] = chunks;
+            chunks += chunkCount(phaseSize_[q], grain);
+        }
+        phaseFirstChunk_[phases] = chunks;
         if (chunkSums_.size() < chunks) chunkSums_.resize(chunks);  // only when the work grew
-        parallelFor(count, grain, [&](std::size_t chunk, std::size_t begin, std::size_t end) {
-            chunkSums_[chunk] = countChunk(begin, end);
-        });
+        auto body = [&](std::size_t phase, std::size_t chunk, std::size_t begin, std::size_t end) {
+            chunkSums_[phaseFirstChunk_[phase] + chunk] = countChunk(phase, begin, end);
+        };
+        if (workers_.empty() || !workersEnabled_ || chunks <= 1) {
+            for (std::size_t q = 0; q < phases; ++q)
+                for (std::size_t k = 0, n = phaseFirstChunk_[q + 1] - phaseFirstChunk_[q]; k < n; ++k)
+                    body(q, k, k * grain, std::min(phaseSize_[q], (k + 1) * grain));
+        } else {
+            auto call = [](void* context, std::size_t phase, std::size_t chunk, std::size_t begin, std::size_t end) {
+                (*static_cast<decltype(body)*>(context))(phase, chunk, begin, end);
+            };
+            run({call, &body, grain, phases});
+        }
         std::uint64_t sum = 0;
         for (std::size_t k = 0; k < chunks; ++k) sum += chunkSums_[k];
         return sum;
     }
 
 private:
-    // A parallelFor without its type, so workers need no std::function (which may allocate).
+    // A job without its type, so workers need no std::function (which may allocate): call(context,
+    // phase, chunk, begin, end) for the chunks of each phase, the phases' sizes in phaseSize_.
     struct Job {
-        void (*call)(void*, std::size_t, std::size_t, std::size_t) = nullptr;
+        void (*call)(void*, std::size_t, std::size_t, std::size_t, std::size_t) = nullptr;
         void* context = nullptr;
-        std::size_t count = 0, grain = 0, chunks = 0;
+        std::size_t grain = 0, phases = 0;
     };
+    void growPhases(std::size_t phases);
     void run(const Job& job);
     void workerLoop(int participant);
     // Takes chunks of the current job until none is left: first from the participant's own share,
@@ -93,17 +130,25 @@ private:
     // then finding the generation unchanged; run() closes the job and then waits for busyWorkers_
     // to reach zero, so it never misses a worker that joined (both sides are sequentially consistent).
     std::atomic<std::uint64_t> generation_{0};
-    // A job's chunks are dealt out in one contiguous share per participant (the caller is 0, worker
-    // i is i), and each takes its own share first: a colour's batches of the solver then go to the
-    // same core pass after pass, with their data in its cache. Taken freely, chunks moved between
-    // cores every pass (2-core machine, 2026-12-04: pyramid10 at 2 threads 0.53 of 1 thread's
-    // speed, 0.64 with shares). A participant that finds its share done takes what is left of the
-    // others'.
+    // Each phase's chunks are dealt out in one contiguous share per participant (the caller is 0,
+    // worker i is i), and each takes its own share first: a colour's batches of the solver then go
+    // to the same core pass after pass, with their data in its cache. Taken freely, chunks moved
+    // between cores every pass (2-core machine, 2026-12-04: pyramid10 at 2 threads 0.53 of 1
+    // thread's speed, 0.64 with shares). A participant that finds its share done takes what is
+    // left of the others'.
     struct alignas(64) Share {
         std::atomic<std::size_t> next{0};  // the next chunk of the share nobody has taken yet
         std::size_t end = 0;
     };
-    std::vector<Share> shares_;  // by participant
+    std::vector<Share> shares_;  // by phase, then participant
+    // Chunks of the current job each participant has run, as it last published (release) on
+    // finishing its part of a phase: phase q is done when they add up to phaseFirstChunk_[q + 1].
+    struct alignas(64) ChunksRun {
+        std::atomic<std::size_t> count{0};
+    };
+    std::vector<ChunksRun> chunksRun_;       // by participant
+    std::vector<std::size_t> phaseSize_;     // the current job's, by phase
+    std::vector<std::size_t> phaseFirstChunk_;  // by phase, and one past the last: chunks before it
     std::atomic<int> busyWorkers_{0};        // workers in the current job
     std::atomic<int> sleepingWorkers_{0};    // workers blocked on wake_ (changed under mutex_)
     std::atomic<bool> wakeCalled_{false};    // notified, and no worker has woken from it yet
