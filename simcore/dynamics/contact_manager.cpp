@@ -164,17 +164,18 @@ void collideSubShapes(const BodyStorage& bodies, std::size_t a, std::uint32_t su
                   subShapeTransform(shapeB, subB, bodies.transform(b)), margin, manifold);
 }
 
-// Keeps the manifold just made (with points) in its bodies' frames, for reuseManifold.
-void keepInBodyFrames(ManifoldRecord& record, const Transform& ta, const Transform& tb) {
+// Keeps the manifold just made (with points), for reuseManifold.
+void keepManifold(ManifoldRecord& record, const Transform& ta, const Transform& tb) {
     const ContactManifold& manifold = record.manifold;
-    ManifoldInBodyFrames& kept = record.inBodyFrames;
+    KeptManifold& kept = record.kept;
     kept.bInA = {ta.applyInverse(tb.position), glm::conjugate(ta.rotation) * tb.rotation};
-    kept.normalInA = ta.rotateInverse(manifold.normal);
+    kept.rotationA = ta.rotation;
+    kept.rotationB = tb.rotation;
     kept.reachB = 0.0f;
     for (int p = 0; p < manifold.pointCount; ++p) {
-        kept.pointInA[p] = ta.applyInverse(manifold.points[p].pointA);
-        kept.pointInB[p] = tb.applyInverse(manifold.points[p].pointB);
-        kept.reachB = std::max(kept.reachB, glm::length(kept.pointInB[p]));
+        kept.offsetA[p] = manifold.points[p].pointA - ta.position;
+        kept.offsetB[p] = manifold.points[p].pointB - tb.position;
+        kept.reachB = std::max(kept.reachB, glm::length(kept.offsetB[p]));
     }
 }
 
@@ -182,20 +183,21 @@ void keepInBodyFrames(ManifoldRecord& record, const Transform& ta, const Transfo
 // point of B has moved against A by more than `reuseDistance` since it was made. Fresh SAT and
 // clipping would find the same features at points at most that far from these.
 bool reuseManifold(ManifoldRecord& record, const Transform& ta, const Transform& tb, float reuseDistance) {
-    const ManifoldInBodyFrames& kept = record.inBodyFrames;
+    const KeptManifold& kept = record.kept;
     const Vec3 shift = ta.applyInverse(tb.position) - kept.bInA.position;
     // |xyz| of the turn since then is sin(angle / 2), whichever sign the quaternion has; a point at
     // distance r from B's origin moves by 2 sin(angle / 2) r.
     const Quat turn = glm::conjugate(kept.bInA.rotation) * (glm::conjugate(ta.rotation) * tb.rotation);
     const float turnMove = 2.0f * glm::length(Vec3(turn.x, turn.y, turn.z)) * kept.reachB;
     if (glm::length(shift) + turnMove > reuseDistance) return false;
+    const Quat turnA = ta.rotation * glm::conjugate(kept.rotationA);
+    const Quat turnB = tb.rotation * glm::conjugate(kept.rotationB);
     ContactManifold& manifold = record.manifold;
-    manifold.normal = ta.rotate(kept.normalInA);
     for (int p = 0; p < manifold.pointCount; ++p) {
         ContactPoint& point = manifold.points[p];
-        point.pointA = ta.apply(kept.pointInA[p]);
-        point.pointB = tb.apply(kept.pointInB[p]);
-        point.separation = glm::dot(point.pointB - point.pointA, manifold.normal);
+        point.pointA = ta.position + kept.offsetA[p];
+        point.pointB = tb.position + kept.offsetB[p];
+        point.separation = glm::dot(tb.position + turnB * kept.offsetB[p] - ta.position - turnA * kept.offsetA[p], manifold.normal);
     }
     return true;
 }
@@ -205,7 +207,7 @@ void storeFreshManifold(ManifoldRecord& record, const ContactManifold& manifold,
                         const Transform& tb) {
     record.impulses = matchImpulses(record.manifold, record.impulses, manifold);
     record.manifold = manifold;
-    keepInBodyFrames(record, ta, tb);
+    keepManifold(record, ta, tb);
 }
 
 }  // namespace

@@ -36,25 +36,29 @@ struct FrictionImpulse {
     Vec3 rolling{0.0f};  // N m s, world frame: the angular impulse of rolling resistance (on B; -rolling on A)
 };
 
-// A manifold in its bodies' own frames, kept from the last time the narrow phase ran on the pair:
-// while the pair's relative pose stays within a small tolerance of the pose it was made at, its
-// points ride along with the bodies and only their separations are measured again (see
-// ContactManager::updateManifolds).
-struct ManifoldInBodyFrames {
-    Transform bInA;                                          // B's pose in A's frame when made
-    Vec3 normalInA{0.0f};
-    std::array<Vec3, kMaxManifoldPoints> pointInA{}, pointInB{};  // each point on its own body
+// A manifold as the narrow phase last made it, kept while the pair's relative pose stays within a
+// small tolerance of the pose it was made at (see ContactManager::updateManifolds). Kept, it is
+// what the solver's substeps make of a manifold within a step (Box3D's contact recycling): the
+// normal stays fixed in the world and each point stays at a fixed offset, in world axes, from its
+// own body's origin, moving with the body but not turning with it; only the separations are
+// measured again, from the offsets turned with their bodies. Points that turned with their bodies
+// carried a stacked cube's support round with its tilt, and an awake tower of 28 unit cubes or more
+// buckled (docs/testing.md); kept fixed, 40 and 60 stand.
+struct KeptManifold {
+    Transform bInA;                                              // B's pose in A's frame when made
+    Quat rotationA{1.0f, 0.0f, 0.0f, 0.0f}, rotationB{1.0f, 0.0f, 0.0f, 0.0f};  // the bodies' when made
+    std::array<Vec3, kMaxManifoldPoints> offsetA{}, offsetB{};  // each point from its body's origin, world axes
     float reachB = 0.0f;  // the farthest point from B's origin (m): how far a turn of B moves them
 };
 
-// What a contact carries only while it has points: its manifold, that manifold in the bodies'
-// frames, and the impulses accumulated on it. Most pairs the broad phase finds never touch (in a
+// What a contact carries only while it has points: its manifold, what keeping it needs, and the
+// impulses accumulated on it. Most pairs the broad phase finds never touch (in a
 // resting pile of cubes, three in four), so these live in a pool of their own, taken when a
 // contact gains points and given back when it loses them, and a pair without points costs only
 // its Contact.
 struct ManifoldRecord {
     ContactManifold manifold;             // world frame, as the narrow phase made or moved it this step
-    ManifoldInBodyFrames inBodyFrames;
+    KeptManifold kept;
     std::array<ContactImpulse, kMaxManifoldPoints> impulses{};
     FrictionImpulse frictionImpulse;
 };
@@ -103,8 +107,8 @@ public:
     // Contacts are refreshed on the pool's threads; the result does not depend on their number.
     //
     // A pair whose relative pose moved by less than `reuseDistance` (m: any point of it, turning
-    // included) since its manifold was made keeps that manifold: its points stay on the features
-    // they were on and only their separations are measured again. A resting pair's pose changes by
+    // included) since its manifold was made keeps that manifold (KeptManifold): its normal and
+    // points stay as they were made and only their separations are measured again. A resting pair's pose changes by
     // micrometres a step, and running SAT and clipping on it anew was most of the narrow phase of a
     // resting pyramid.
     void updateManifolds(const BodyStorage& bodies, const BroadPhase& broadPhase, float speculativeDistance,

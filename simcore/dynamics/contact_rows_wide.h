@@ -126,13 +126,12 @@ SIMCORE_SIMD_INLINE PairMotionW gatherMotion(const float* rows, const std::int32
             RotationDeltaW(b[4], b[5], b[6], b[7])};
 }
 
-// A point's separation now. The anchors sit mid-gap at prepare; each body's surface is half the
-// gap away along the normal and its core (centre or segment) a rounding radius further.
+// A point's separation now. Each anchor sits on its body's surface at prepare, and its core
+// (centre or segment) a rounding radius further in along the normal.
 SIMCORE_SIMD_INLINE FloatW separationNow(const PairMotionW& motion, const Vec3W& normal, const Vec3W& anchorA,
                                          const Vec3W& anchorB, FloatW baseSeparation, FloatW radiusA, FloatW radiusB) {
-    const FloatW halfGap = FloatW::splat(0.5f) * baseSeparation;
-    const Vec3W coreA = mulAdd(normal, -(halfGap + radiusA), anchorA);
-    const Vec3W coreB = mulAdd(normal, halfGap + radiusB, anchorB);
+    const Vec3W coreA = mulAdd(normal, -radiusA, anchorA);
+    const Vec3W coreB = mulAdd(normal, radiusB, anchorB);
     const Vec3W d = motion.shift + motion.turnB * coreB - motion.turnA * coreA;
     return baseSeparation + dot(d, normal);
 }
