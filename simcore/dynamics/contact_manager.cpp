@@ -168,9 +168,9 @@ void collideSubShapes(const BodyStorage& bodies, std::size_t a, std::uint32_t su
 void keepManifold(ManifoldRecord& record, const Transform& ta, const Transform& tb) {
     const ContactManifold& manifold = record.manifold;
     KeptManifold& kept = record.kept;
-    kept.bInA = {ta.applyInverse(tb.position), glm::conjugate(ta.rotation) * tb.rotation};
     kept.rotationA = ta.rotation;
     kept.rotationB = tb.rotation;
+    kept.positionBInA = ta.applyInverse(tb.position);
     kept.reachB = 0.0f;
     for (int p = 0; p < manifold.pointCount; ++p) {
         kept.offsetA[p] = manifold.points[p].pointA - ta.position;
@@ -184,10 +184,11 @@ void keepManifold(ManifoldRecord& record, const Transform& ta, const Transform& 
 // clipping would find the same features at points at most that far from these.
 bool reuseManifold(ManifoldRecord& record, const Transform& ta, const Transform& tb, float reuseDistance) {
     const KeptManifold& kept = record.kept;
-    const Vec3 shift = ta.applyInverse(tb.position) - kept.bInA.position;
-    // |xyz| of the turn since then is sin(angle / 2), whichever sign the quaternion has; a point at
-    // distance r from B's origin moves by 2 sin(angle / 2) r.
-    const Quat turn = glm::conjugate(kept.bInA.rotation) * (glm::conjugate(ta.rotation) * tb.rotation);
+    const Vec3 shift = ta.applyInverse(tb.position) - kept.positionBInA;
+    // |xyz| of the turn of B against A since then is sin(angle / 2), whichever sign the quaternion
+    // has; a point at distance r from B's origin moves by 2 sin(angle / 2) r.
+    const Quat bInAWhenMade = glm::conjugate(kept.rotationA) * kept.rotationB;
+    const Quat turn = glm::conjugate(bInAWhenMade) * (glm::conjugate(ta.rotation) * tb.rotation);
     const float turnMove = 2.0f * glm::length(Vec3(turn.x, turn.y, turn.z)) * kept.reachB;
     if (glm::length(shift) + turnMove > reuseDistance) return false;
     const Quat turnA = ta.rotation * glm::conjugate(kept.rotationA);
@@ -197,7 +198,8 @@ bool reuseManifold(ManifoldRecord& record, const Transform& ta, const Transform&
         ContactPoint& point = manifold.points[p];
         point.pointA = ta.position + kept.offsetA[p];
         point.pointB = tb.position + kept.offsetB[p];
-        point.separation = glm::dot(tb.position + turnB * kept.offsetB[p] - ta.position - turnA * kept.offsetA[p], manifold.normal);
+        const Vec3 apart = tb.position + turnB * kept.offsetB[p] - ta.position - turnA * kept.offsetA[p];
+        point.separation = glm::dot(apart, manifold.normal);
     }
     return true;
 }

@@ -45,8 +45,8 @@ struct FrictionImpulse {
 // carried a stacked cube's support round with its tilt, and an awake tower of 28 unit cubes or more
 // buckled (docs/testing.md); kept fixed, 40 and 60 stand.
 struct KeptManifold {
-    Transform bInA;                                              // B's pose in A's frame when made
     Quat rotationA{1.0f, 0.0f, 0.0f, 0.0f}, rotationB{1.0f, 0.0f, 0.0f, 0.0f};  // the bodies' when made
+    Vec3 positionBInA{0.0f};                                    // B's origin in A's frame when made
     std::array<Vec3, kMaxManifoldPoints> offsetA{}, offsetB{};  // each point from its body's origin, world axes
     float reachB = 0.0f;  // the farthest point from B's origin (m): how far a turn of B moves them
 };
@@ -108,9 +108,9 @@ public:
     //
     // A pair whose relative pose moved by less than `reuseDistance` (m: any point of it, turning
     // included) since its manifold was made keeps that manifold (KeptManifold): its normal and
-    // points stay as they were made and only their separations are measured again. A resting pair's pose changes by
-    // micrometres a step, and running SAT and clipping on it anew was most of the narrow phase of a
-    // resting pyramid.
+    // points stay as they were made and only their separations are measured again. A resting
+    // pair's pose changes by micrometres a step, and running SAT and clipping on it anew was most
+    // of the narrow phase of a resting pyramid.
     void updateManifolds(const BodyStorage& bodies, const BroadPhase& broadPhase, float speculativeDistance,
                          float reuseDistance, float timeStep, TaskPool& pool);
 
