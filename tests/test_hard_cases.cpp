@@ -93,7 +93,7 @@ private slots:
 };
 
 // The tower40 demo (12 substeps at 180 Hz contacts, so that it sinks about a ninth of what it
-// sinks at the defaults, see docs/testing.md, open problems) must stand for 30 s within 5 cm.
+// sinks at the defaults, see test_long_stability) must stand for 30 s within 5 cm.
 void TestHardCases::towerOf40Stands30s() {
     const Drift drift = runSceneFile("scenes/tower40.json", 30.0f);
     qInfo("tower40: worst drift %.4f m (%s)", drift.worst, drift.body.c_str());

@@ -393,6 +393,7 @@ void ContactManager::takeManifold(Contact& contact) {
 void ContactManager::releaseManifold(Contact& contact) {
     freeManifolds_.push_back(contact.manifoldIndex);
     contact.manifoldIndex = Contact::kNoManifold;
+    contact.normalImpulse = 0.0f;
 }
 
 void ContactManager::removeAt(std::size_t index) {

@@ -73,6 +73,10 @@ struct Contact {
     float rollingLever = 0.0f;           // m, combined: max(CA, CB) max(rA, rB)
     // Its ManifoldRecord (ContactManager::manifoldOf) while it has points, else kNoManifold.
     std::uint32_t manifoldIndex = kNoManifold;
+    // N s: the points' summed normal impulse in the last substep solved (ContactSolver::
+    // storeImpulses), the load that stiffens the contact's spring. Kept here as well as in the
+    // manifold's record so that colouring the manifolds reads no record.
+    float normalImpulse = 0.0f;
     bool ofSubShapeBodyPair = false;     // made by the mid-phase for a body pair with several sub-shapes
     bool dynamicPair = false;            // both bodies dynamic at creation: counts toward their contact cap
                                          // (false in a SubShapeBodyPair, which counts once for all)
@@ -124,6 +128,7 @@ public:
     void clear();
 
     const std::vector<Contact>& contacts() const { return contacts_; }
+    std::vector<Contact>& contacts() { return contacts_; }
     // The manifold and impulses of a contact that has points (contact.hasPoints()).
     const ManifoldRecord& manifoldOf(const Contact& contact) const { return manifolds_[contact.manifoldIndex]; }
     ManifoldRecord& manifoldOf(const Contact& contact) { return manifolds_[contact.manifoldIndex]; }

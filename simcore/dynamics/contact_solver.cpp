@@ -53,8 +53,8 @@ Mat3 rollingMass(const Mat3& inverseInertiaA, const Mat3& inverseInertiaB) {
 // may close the gap in one substep and no more; overlapping ones are pushed out by the chosen
 // position correction, or not at all in relax passes.
 struct Correction {
-    enum class Mode { None, Soft, Baumgarte } mode;
-    FloatW inverseH, biasRate, massScale, impulseScale, maxPush, baumgarte, linearSlop;
+    enum class Mode { None, Soft, Baumgarte } mode;  // Soft: each lane's spring (ManifoldBatch)
+    FloatW inverseH, maxPush, baumgarte, linearSlop;
 };
 
 }  // namespace
@@ -72,8 +72,8 @@ std::int32_t ContactSolver::solverBody(std::size_t denseIndex, const BodyStorage
     return index;
 }
 
-void ContactSolver::prepare(const ContactManager& contactManager, const BodyStorage& bodies, const Params& params,
-                            TaskPool& pool) {
+void ContactSolver::prepare(const ContactManager& contactManager, const BodyStorage& bodies, const JointStorage& joints,
+                            const Params& params, TaskPool& pool) {
     const std::vector<Contact>& contacts = contactManager.contacts();
     params_ = params;
     pool_ = &pool;
@@ -82,8 +82,8 @@ void ContactSolver::prepare(const ContactManager& contactManager, const BodyStor
     usesRestitution_ = false;
 
     const float h = params.substepDt;
-    soft_ = SoftConstraint::make(SoftConstraint::cappedHertz(params.solver.contactHertz, h),
-                                 params.solver.contactDampingRatio, h);
+    const float softHertz = SoftConstraint::cappedHertz(params.solver.contactHertz, h);
+    soft_ = SoftConstraint::make(softHertz, params.solver.contactDampingRatio, h);
 
     // Solver bodies: entry 0 stands for every static body (zero velocity, never moves).
     references_.clear();
@@ -94,10 +94,22 @@ void ContactSolver::prepare(const ContactManager& contactManager, const BodyStor
     // Colour greedily in contact order (deterministic): the lowest colour free at both moving
     // bodies. Immovable bodies are only read, so any number of lanes may share them. A manifold
     // that finds no free colour goes to the overflow, solved one manifold per batch.
-    std::array<std::uint32_t, kColorCount + 1> perColor{};
+    std::array<std::uint32_t, kColorCount + 1> perColor{}, stiffPerColor{};
     order_.clear();
     colorOf_.clear();
+    stiffening_.clear();
     unevenBody_.clear();
+    // A pair's weight per substep (N s per kg of reduced mass): the unit of a manifold's load.
+    const float weightImpulse = glm::length(params.gravity) * h;
+    const bool soft = params.solver.positionCorrection == PositionCorrection::SoftStep;
+    // A jointed body's contacts also carry what its joints hold, which its own mass does not
+    // measure, and a stiffer contact fighting a joint's spring pumps energy into the assembly
+    // (a light hull fixed to a heavy box gained 2.6 kJ landing): they keep the base spring.
+    jointed_.assign(joints.empty() ? 0 : bodies.size(), 0);
+    for (const Joint& joint : joints.joints) {
+        jointed_[static_cast<std::size_t>(bodies.denseIndex(joint.bodyA))] = 1;
+        if (joint.bodyB.isValid()) jointed_[static_cast<std::size_t>(bodies.denseIndex(joint.bodyB))] = 1;
+    }
     for (std::size_t ci = 0; ci < contacts.size(); ++ci) {
         const Contact& contact = contacts[ci];
         if (!contact.hasPoints()) continue;
@@ -121,21 +133,33 @@ void ContactSolver::prepare(const ContactManager& contactManager, const BodyStor
             if (movesA) bodyColors_[sa] |= bit;
             if (movesB) bodyColors_[sb] |= bit;
         }
+        float stiffening = 1.0f;
+        if (soft && weightImpulse > 0.0f && (jointed_.empty() || (!jointed_[a] && !jointed_[b]))) {
+            const float movingInverseMass = (movesA ? inverseMassA : 0.0f) + (movesB ? inverseMassB : 0.0f);
+            const float weights = contact.normalImpulse * movingInverseMass / weightImpulse;
+            stiffening = std::clamp(weights / kStiffLoad, 1.0f, kMaxStiffening);
+        }
         order_.push_back(static_cast<std::uint32_t>(ci));
         colorOf_.push_back(static_cast<std::uint8_t>(color));
+        stiffening_.push_back(stiffening);
         ++perColor[color];
+        if (stiffening > 1.0f) ++stiffPerColor[color];
     }
     constraintCount_ = order_.size();
 
-    // Batches colour by colour; a colour's manifolds fill lanes in contact order.
-    std::array<std::uint32_t, kColorCount + 1> filled{};
+    // Batches colour by colour; a colour's manifolds fill lanes in contact order, the stiffened
+    // ones first.
+    std::array<std::uint32_t, kColorCount + 1> filledStiff{}, filledPlain{};
     std::uint32_t batchCount = 0;
     colorCount_ = 0;
+    anyStiff_ = false;
     for (int color = 0; color <= kColorCount; ++color) {
         colorFirstBatch_[color] = batchCount;
         const std::uint32_t lanes = color == kOverflow ? 1 : kLanes;
+        colorStiffEnd_[color] = batchCount + (stiffPerColor[color] + lanes - 1) / lanes;
         batchCount += (perColor[color] + lanes - 1) / lanes;
         if (perColor[color] > 0) ++colorCount_;
+        anyStiff_ = anyStiff_ || stiffPerColor[color] > 0;
     }
     colorFirstBatch_[kOverflow + 1] = batchCount;
     batches_.resize(batchCount);  // cleared below, batch by batch in parallel (megabytes in pyramid20)
@@ -145,7 +169,8 @@ void ContactSolver::prepare(const ContactManager& contactManager, const BodyStor
     for (std::size_t k = 0; k < order_.size(); ++k) {
         const int color = colorOf_[k];
         const std::uint32_t lanes = color == kOverflow ? 1 : kLanes;
-        const std::uint32_t slot = filled[color]++;
+        const std::uint32_t slot =
+            stiffening_[k] > 1.0f ? filledStiff[color]++ : stiffPerColor[color] + filledPlain[color]++;
         laneConstraint_[(colorFirstBatch_[color] + slot / lanes) * kLanes + slot % lanes] = static_cast<std::uint32_t>(k);
     }
 
@@ -165,6 +190,7 @@ void ContactSolver::prepare(const ContactManager& contactManager, const BodyStor
     for (std::size_t entry = beginBatch * kLanes; entry < endBatch * kLanes; ++entry) {
         if (laneConstraint_[entry] == kNoConstraint) continue;
         const std::uint32_t ci = order_[laneConstraint_[entry]];
+        const float stiffening = stiffening_[laneConstraint_[entry]];
         ManifoldBatch& batch = batches_[entry / kLanes];
         const int lane = static_cast<int>(entry % kLanes);
 
@@ -182,6 +208,7 @@ void ContactSolver::prepare(const ContactManager& contactManager, const BodyStor
         batch.contactIndex[lane] = ci;
         batch.pointCount[lane] = static_cast<std::uint8_t>(manifold.pointCount);
         batch.maxPointCount = std::max(batch.maxPointCount, batch.pointCount[lane]);
+        batch.stiff = batch.stiff || stiffening > 1.0f;
 
         const float inverseMassA = movesA ? bodies.inverseMass[a] : 0.0f;
         const float inverseMassB = movesB ? bodies.inverseMass[b] : 0.0f;
@@ -189,6 +216,12 @@ void ContactSolver::prepare(const ContactManager& contactManager, const BodyStor
         const Mat3 inverseInertiaB = movesB ? bodies.inverseInertiaWorld[b] : Mat3(0.0f);
         batch.inverseMassA.setLane(lane, inverseMassA);
         batch.inverseMassB.setLane(lane, inverseMassB);
+        const SoftConstraint spring =
+            stiffening > 1.0f ? SoftConstraint::make(softHertz * std::sqrt(stiffening), params.solver.contactDampingRatio, h)
+                              : soft_;
+        batch.biasRate.setLane(lane, spring.biasRate);
+        batch.massScale.setLane(lane, spring.massScale);
+        batch.impulseScale.setLane(lane, spring.impulseScale);
         setLanes(batch.inverseInertiaA, lane, inverseInertiaA);
         setLanes(batch.inverseInertiaB, lane, inverseInertiaB);
 
@@ -259,7 +292,7 @@ void ContactSolver::prepare(const ContactManager& contactManager, const BodyStor
     velocities_.assign(references_.size() + batches_.size(), BodyRow{});
     changedInPass_.assign(references_.size(), 0);
     unevenBody_.resize(references_.size(), 0);
-    relaxPass_ = 1;  // no body counts as changed before the first relax pass
+    pass_ = 1;  // no body counts as changed before the first pass
     motion_.assign(references_.size(), BodyRow{});
     motion_[0].value[7] = 1.0f;  // the immovable body's rotation: identity
 }
@@ -360,31 +393,35 @@ void ContactSolver::warmStart(BodyStorage& bodies) {
 bool ContactSolver::solve(BodyStorage& bodies, bool useBias) {
     loadVelocities(bodies);
     loadMotion(bodies);
-    const bool pushLeft = solvePass(useBias, false);
+    // A relax pass says whether push is left; a biased one whether a stiffened manifold's rows
+    // still moved, and then those manifolds' batches are solved again.
+    const bool unsettled = solvePass(useBias, PassScope::All);
+    bool stiffUnsettled = useBias && unsettled;
+    for (int i = 0; stiffUnsettled && i < kStiffPasses; ++i) stiffUnsettled = solvePass(true, PassScope::Stiff);
     storeVelocities(bodies);
-    return pushLeft;
+    return !useBias && unsettled;
 }
 
 bool ContactSolver::relaxWherePushing(BodyStorage& bodies, int passes) {
     loadVelocities(bodies);
     loadMotion(bodies);
     bool pushLeft = true;
-    for (int i = 0; pushLeft && i < passes; ++i) pushLeft = solvePass(false, true);
+    for (int i = 0; pushLeft && i < passes; ++i) pushLeft = solvePass(false, PassScope::Pushing);
     storeVelocities(bodies);
     return pushLeft;
 }
 
 bool ContactSolver::touchesChange(const ManifoldBatch& c) const {
     for (int lane = 0; lane < kLanes; ++lane) {
-        if (changedInPass_[static_cast<std::size_t>(c.bodyA[lane])] + 1 >= relaxPass_) return true;
-        if (changedInPass_[static_cast<std::size_t>(c.bodyB[lane])] + 1 >= relaxPass_) return true;
+        if (changedInPass_[static_cast<std::size_t>(c.bodyA[lane])] + 1 >= pass_) return true;
+        if (changedInPass_[static_cast<std::size_t>(c.bodyB[lane])] + 1 >= pass_) return true;
     }
     return false;
 }
 
-bool ContactSolver::solvePass(bool useBias, bool restricted) {
-    if (!useBias) ++relaxPass_;
-    extraRelaxPasses_ = restricted ? extraRelaxPasses_ + 1 : 0;
+bool ContactSolver::solvePass(bool useBias, PassScope scope) {
+    ++pass_;
+    extraRelaxPasses_ = scope == PassScope::Pushing ? extraRelaxPasses_ + 1 : 0;
     const bool unevenOnly = extraRelaxPasses_ > kEvenExtraRelaxPasses;
     Correction correction;
     if (!useBias)
@@ -395,9 +432,6 @@ bool ContactSolver::solvePass(bool useBias, bool restricted) {
         correction.mode = Correction::Mode::Baumgarte;
     const float inverseH = 1.0f / params_.substepDt;
     correction.inverseH = FloatW::splat(inverseH);
-    correction.biasRate = FloatW::splat(soft_.biasRate);
-    correction.massScale = FloatW::splat(soft_.massScale);
-    correction.impulseScale = FloatW::splat(soft_.impulseScale);
     correction.maxPush = FloatW::splat(-params_.solver.maxPushVelocity);
     correction.baumgarte = FloatW::splat(params_.solver.baumgarte * inverseH);
     correction.linearSlop = FloatW::splat(params_.contact.linearSlop);
@@ -410,7 +444,7 @@ bool ContactSolver::solvePass(bool useBias, bool restricted) {
     const bool frictionInPass = useBias != relaxes;
     const bool impactFrictionPass = useBias && !frictionInPass;  // for the manifolds that impact
 
-    const FloatW settleTolerance = FloatW::splat(kRelaxTolerance), sweepTolerance = FloatW::splat(kSweepTolerance);
+    const FloatW settleTolerance = FloatW::splat(useBias ? kStiffTolerance : kRelaxTolerance), sweepTolerance = FloatW::splat(kSweepTolerance);
     const FloatW deepOverlap = FloatW::splat(-params_.contact.linearSlop);
     float* rows = velocities_.data()->value;
     const float* motion = motion_.data()->value;
@@ -442,9 +476,9 @@ bool ContactSolver::solvePass(bool useBias, bool restricted) {
             const FloatW arrive = separation * correction.inverseH;
             FloatW bias = select(speculative, arrive, zero), massScale = one, impulseScale = zero;
             if (correction.mode == Correction::Mode::Soft) {
-                bias = select(speculative, arrive, simd::max(correction.biasRate * separation, correction.maxPush));
-                massScale = select(speculative, one, correction.massScale);
-                impulseScale = select(speculative, zero, correction.impulseScale);
+                bias = select(speculative, arrive, simd::max(c.biasRate * separation, correction.maxPush));
+                massScale = select(speculative, one, c.massScale);
+                impulseScale = select(speculative, zero, c.impulseScale);
             } else if (correction.mode == Correction::Mode::Baumgarte) {
                 const FloatW overlap = simd::min(separation + correction.linearSlop, zero);
                 bias = select(speculative, arrive, simd::max(correction.baumgarte * overlap, correction.maxPush));
@@ -477,7 +511,7 @@ bool ContactSolver::solvePass(bool useBias, bool restricted) {
         for (int i = 0; i < c.maxPointCount; ++i) {
             const FloatW change = c.points[i].normalImpulse - normalRows[i].impulseAtStart;
             const FloatW excess = simd::max(change, -change) - settleTolerance * c.points[i].normalMass;
-            largestExcess = simd::max(largestExcess, select(normalRows[i].deep, excess, FloatW::splat(-1.0f)));
+            largestExcess = simd::max(largestExcess, useBias ? excess : select(normalRows[i].deep, excess, FloatW::splat(-1.0f)));
         }
 
         const bool impactFriction = impactFrictionPass && c.anyImpact;
@@ -516,20 +550,24 @@ bool ContactSolver::solvePass(bool useBias, bool restricted) {
             for (FloatW& rolling : c.rollingImpulse) rolling = select(kept, rolling, zero);
         }
         scatterVelocities(rows, c.storeA, c.storeB, v);
-        if (useBias) return simd::any(largestExcess > zero);
-        bool pushes = false;
+        // The lanes still changing mark their moving bodies: in a velocity pass, stiffened
+        // manifolds' lanes; in a relax pass, those still pushing.
+        if (useBias && !c.stiff) return false;
+        bool changing = false;
         for (int lane = 0; lane < kLanes; ++lane) {
             if (largestExcess.lane(lane) <= 0.0f) continue;
-            if (unevenOnly && !unevenBody_[static_cast<std::size_t>(c.bodyA[lane])] &&
+            if (!useBias && unevenOnly && !unevenBody_[static_cast<std::size_t>(c.bodyA[lane])] &&
                 !unevenBody_[static_cast<std::size_t>(c.bodyB[lane])])
                 continue;
-            pushes = true;
-            if (c.storeA[lane] == c.bodyA[lane]) changedInPass_[static_cast<std::size_t>(c.bodyA[lane])] = relaxPass_;
-            if (c.storeB[lane] == c.bodyB[lane]) changedInPass_[static_cast<std::size_t>(c.bodyB[lane])] = relaxPass_;
+            changing = true;
+            if (c.storeA[lane] == c.bodyA[lane]) changedInPass_[static_cast<std::size_t>(c.bodyA[lane])] = pass_;
+            if (c.storeB[lane] == c.bodyB[lane]) changedInPass_[static_cast<std::size_t>(c.bodyB[lane])] = pass_;
         }
-        return pushes;
+        return changing;
     };
-    if (!restricted) return forEachBatch(solveBatch);
+    if (scope == PassScope::All) return forEachBatch(solveBatch);
+    if (scope == PassScope::Stiff)
+        return forEachBatch([&](ManifoldBatch& c) { return touchesChange(c) && solveBatch(c); }, true);
     // Few batches still push: one after another (colour by colour, as batches_ is ordered).
     bool pushLeft = false;
     for (ManifoldBatch& c : batches_)
@@ -544,10 +582,15 @@ void ContactSolver::storeImpulses(ContactManager& contactManager) const {
         const ManifoldBatch& c = batches_[k];
         for (int lane = 0; lane < kLanes; ++lane) {
             if (c.pointCount[lane] == 0) continue;
-            ManifoldRecord& record = contactManager.manifoldOf(contactManager.contacts()[c.contactIndex[lane]]);
+            Contact& contact = contactManager.contacts()[c.contactIndex[lane]];
+            ManifoldRecord& record = contactManager.manifoldOf(contact);
             const Vec3 tangent1(c.tangent1[0].lane(lane), c.tangent1[1].lane(lane), c.tangent1[2].lane(lane));
             const Vec3 tangent2(c.tangent2[0].lane(lane), c.tangent2[1].lane(lane), c.tangent2[2].lane(lane));
-            for (int i = 0; i < c.pointCount[lane]; ++i) record.impulses[i] = {c.points[i].normalImpulse.lane(lane)};
+            contact.normalImpulse = 0.0f;
+            for (int i = 0; i < c.pointCount[lane]; ++i) {
+                record.impulses[i] = {c.points[i].normalImpulse.lane(lane)};
+                contact.normalImpulse += record.impulses[i].normal;
+            }
             record.frictionImpulse = {c.tangentImpulse1.lane(lane) * tangent1 + c.tangentImpulse2.lane(lane) * tangent2,
                                        c.twistImpulse.lane(lane),
                                        Vec3(c.rollingImpulse[0].lane(lane), c.rollingImpulse[1].lane(lane),

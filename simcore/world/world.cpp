@@ -254,7 +254,7 @@ void World::prepareConstraints(const StepPlan& plan) {
         params.gravity = plan.velocity.gravity;
         params.solver = settings_.solver;
         params.contact = settings_.contact;
-        contactSolver_.prepare(contactManager_, bodies_, params, threads_.pool());
+        contactSolver_.prepare(contactManager_, bodies_, joints_, params, threads_.pool());
     }
     if (plan.joints) jointSolver_.prepare(joints_, bodies_, {plan.substepDt, settings_.joint});
     // The poses continuous collision sweeps from (it runs only with contacts, so only with this stage).
