@@ -160,7 +160,7 @@ constexpr SettingInfo kSettings[] = {
      "how overlap is removed: soft contacts or Baumgarte bias",
      SIMCORE_MEMBER(&W::solver, &SolverSettings::positionCorrection), kPositionCorrectionLabels},
     {"solver.contactHertz", T::Float, G::Solver, kStiffness, {}, "Contact stiffness",
-     "soft-contact spring frequency, capped at a quarter of the substep rate",
+     "soft-contact spring frequency, capped at a quarter of the substep rate; up to 1.41 times that where loaded",
      SIMCORE_MEMBER(&W::solver, &SolverSettings::contactHertz)},
     {"solver.contactDampingRatio", T::Float, G::Solver, {0.0, 1e4}, {}, "Contact damping",
      "soft-contact damping ratio (above 1: no spring-back)",

@@ -76,7 +76,8 @@ struct SolverSettings {
     int velocityIterations = 2;  // sequential-impulse passes per substep
     int positionIterations = 1;  // per substep: relax passes (soft step); unused by Baumgarte
     PositionCorrection positionCorrection = PositionCorrection::SoftStep;
-    float contactHertz = 60.0f;         // soft-contact stiffness (Hz), capped at a quarter of the substep rate
+    float contactHertz = 60.0f;         // soft-contact stiffness (Hz), capped at a quarter of the substep rate;
+                                        // loaded contacts up to 1.41 times that (ContactSolver::kStiffLoad)
     float contactDampingRatio = 10.0f;  // soft-contact damping ratio (overdamped: no spring-back)
     float maxPushVelocity = 3.0f;       // m/s: overlap is never removed faster than this
     float baumgarte = 0.2f;             // fraction of the overlap removed per substep (Baumgarte only)
