@@ -83,7 +83,7 @@ void ContactSolver::prepare(const ContactManager& contactManager, const BodyStor
 
     const float h = params.substepDt;
     const float softHertz = SoftConstraint::cappedHertz(params.solver.contactHertz, h);
-    soft_ = SoftConstraint::make(softHertz, params.solver.contactDampingRatio, h);
+    const SoftConstraint baseSpring = SoftConstraint::make(softHertz, params.solver.contactDampingRatio, h);
 
     // Solver bodies: entry 0 stands for every static body (zero velocity, never moves).
     references_.clear();
@@ -152,14 +152,12 @@ void ContactSolver::prepare(const ContactManager& contactManager, const BodyStor
     std::array<std::uint32_t, kColorCount + 1> filledStiff{}, filledPlain{};
     std::uint32_t batchCount = 0;
     colorCount_ = 0;
-    anyStiff_ = false;
     for (int color = 0; color <= kColorCount; ++color) {
         colorFirstBatch_[color] = batchCount;
         const std::uint32_t lanes = color == kOverflow ? 1 : kLanes;
         colorStiffEnd_[color] = batchCount + (stiffPerColor[color] + lanes - 1) / lanes;
         batchCount += (perColor[color] + lanes - 1) / lanes;
         if (perColor[color] > 0) ++colorCount_;
-        anyStiff_ = anyStiff_ || stiffPerColor[color] > 0;
     }
     colorFirstBatch_[kOverflow + 1] = batchCount;
     batches_.resize(batchCount);  // cleared below, batch by batch in parallel (megabytes in pyramid20)
@@ -218,7 +216,7 @@ void ContactSolver::prepare(const ContactManager& contactManager, const BodyStor
         batch.inverseMassB.setLane(lane, inverseMassB);
         const SoftConstraint spring =
             stiffening > 1.0f ? SoftConstraint::make(softHertz * std::sqrt(stiffening), params.solver.contactDampingRatio, h)
-                              : soft_;
+                              : baseSpring;
         batch.biasRate.setLane(lane, spring.biasRate);
         batch.massScale.setLane(lane, spring.massScale);
         batch.impulseScale.setLane(lane, spring.impulseScale);
@@ -506,9 +504,10 @@ bool ContactSolver::solvePass(bool useBias, PassScope scope) {
             }
             if (!simd::any(sweepExcess > zero)) break;
         }
-        // The velocity each row changed over the pass, beyond the relax tolerance; only where the
-        // bodies overlap beyond the slop, where the velocity passes pushed.
-        for (int i = 0; i < c.maxPointCount; ++i) {
+        // The velocity each row changed over the pass, beyond the pass's tolerance: in a velocity
+        // pass every row of a stiffened manifold's batch; in a relax pass only where the bodies
+        // overlap beyond the slop, where the velocity passes pushed.
+        for (int i = 0; i < c.maxPointCount && (!useBias || c.stiff); ++i) {
             const FloatW change = c.points[i].normalImpulse - normalRows[i].impulseAtStart;
             const FloatW excess = simd::max(change, -change) - settleTolerance * c.points[i].normalMass;
             largestExcess = simd::max(largestExcess, useBias ? excess : select(normalRows[i].deep, excess, FloatW::splat(-1.0f)));

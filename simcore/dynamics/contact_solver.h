@@ -227,7 +227,6 @@ private:
     std::array<std::uint32_t, kColorCount + 2> colorFirstBatch_{};  // colour c: [first[c], first[c + 1])
     // Colour c's batches holding a stiffened manifold: [first[c], stiffEnd[c]).
     std::array<std::uint32_t, kColorCount + 1> colorStiffEnd_{};
-    bool anyStiff_ = false;
     TaskPool* pool_ = nullptr;                 // prepare's
     std::vector<BodyRow> velocities_, motion_;  // by solver body
     std::vector<BodyReference> references_;    // by solver body; entry 0 is the immovable body
@@ -250,7 +249,6 @@ private:
     // By solver body: 1 where it touches a moving body of uneven mass (kUnevenMassRatio).
     std::vector<std::uint8_t> unevenBody_;
     Params params_;
-    SoftConstraint soft_;  // overlap correction of the position-correcting passes
     float maxPenetration_ = 0.0f;
     std::size_t constraintCount_ = 0, colorCount_ = 0;
     bool usesFriction_ = false;
