@@ -85,7 +85,19 @@ void BodyStorage::refreshInverseInertiaWorld(std::size_t i) {
         return;
     }
     const Mat3 r = glm::mat3_cast(orientation[i]);
-    inverseInertiaWorld[i] = r * inverseInertiaLocal[i] * glm::transpose(r);
+    const Mat3& local = inverseInertiaLocal[i];
+    if (!isDiagonal(local)) {
+        inverseInertiaWorld[i] = r * local * glm::transpose(r);
+        return;
+    }
+    // Moments about the body's axes (every shape but a hull): the sum over the axes of the moment
+    // times the axis's outer product, half the work of the two products above.
+    const Vec3 scaledX = local[0][0] * r[0], scaledY = local[1][1] * r[1], scaledZ = local[2][2] * r[2];
+    Mat3& world = inverseInertiaWorld[i];
+    for (int column = 0; column < 3; ++column)
+        for (int row = column; row < 3; ++row)
+            world[column][row] = world[row][column] =
+                scaledX[row] * r[0][column] + scaledY[row] * r[1][column] + scaledZ[row] * r[2][column];
 }
 
 }  // namespace simcore

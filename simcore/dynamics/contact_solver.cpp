@@ -293,6 +293,8 @@ void ContactSolver::prepare(const ContactManager& contactManager, const BodyStor
     pass_ = 1;  // no body counts as changed before the first pass
     motion_.assign(references_.size(), BodyRow{});
     motion_[0].value[7] = 1.0f;  // the immovable body's rotation: identity
+    loadMotion(bodies);
+    motionCount_ = 1;  // the batches' separations (separationMotion 0) are computed in their first pass
 }
 
 // A batch's effective masses; zero for the rows of absent points and of frictionless lanes, so those
@@ -349,6 +351,11 @@ void ContactSolver::loadVelocities(const BodyStorage& bodies) {
     }
 }
 
+void ContactSolver::followPositions(const BodyStorage& bodies) {
+    ++motionCount_;
+    loadMotion(bodies);
+}
+
 void ContactSolver::loadMotion(const BodyStorage& bodies) {
     for (std::size_t s = 1; s < references_.size(); ++s) {
         const BodyReference& ref = references_[s];
@@ -388,21 +395,22 @@ void ContactSolver::warmStart(BodyStorage& bodies) {
     storeVelocities(bodies);
 }
 
-bool ContactSolver::solve(BodyStorage& bodies, bool useBias) {
+bool ContactSolver::solve(BodyStorage& bodies, bool useBias, int passes) {
     loadVelocities(bodies);
-    loadMotion(bodies);
-    // A relax pass says whether push is left; a biased one whether a stiffened manifold's rows
-    // still moved, and then those manifolds' batches are solved again.
-    const bool unsettled = solvePass(useBias, PassScope::All);
-    bool stiffUnsettled = useBias && unsettled;
-    for (int i = 0; stiffUnsettled && i < kStiffPasses; ++i) stiffUnsettled = solvePass(true, PassScope::Stiff);
+    bool unsettled = false;
+    for (int pass = 0; pass < passes; ++pass) {
+        // A relax pass says whether push is left; a biased one whether a stiffened manifold's rows
+        // still moved, and then those manifolds' batches are solved again.
+        unsettled = solvePass(useBias, PassScope::All);
+        bool stiffUnsettled = useBias && unsettled;
+        for (int i = 0; stiffUnsettled && i < kStiffPasses; ++i) stiffUnsettled = solvePass(true, PassScope::Stiff);
+    }
     storeVelocities(bodies);
     return !useBias && unsettled;
 }
 
 bool ContactSolver::relaxWherePushing(BodyStorage& bodies, int passes) {
     loadVelocities(bodies);
-    loadMotion(bodies);
     bool pushLeft = true;
     for (int i = 0; pushLeft && i < passes; ++i) pushLeft = solvePass(false, PassScope::Pushing);
     storeVelocities(bodies);
@@ -455,8 +463,6 @@ bool ContactSolver::solvePass(bool useBias, PassScope scope) {
         const Vec3W normal = load(c.normal);
         const SymMat3W inverseInertiaA = load(c.inverseInertiaA), inverseInertiaB = load(c.inverseInertiaB);
 
-        const PairMotionW pairMotion = gatherMotion(motion, c.bodyA, c.bodyB);
-
         // Each point's velocity target for this pass: positions do not move within it.
         struct NormalRow {
             Vec3W angularA, angularB;
@@ -464,11 +470,19 @@ bool ContactSolver::solvePass(bool useBias, PassScope scope) {
             MaskW deep;
         };
         NormalRow normalRows[kMaxManifoldPoints];
+        if (c.separationMotion != motionCount_) {
+            const PairMotionW pairMotion = gatherMotion(motion, c.bodyA, c.bodyB);
+            for (int i = 0; i < c.maxPointCount; ++i) {
+                PointBatch& p = c.points[i];
+                p.separation = separationNow(pairMotion, normal, load(p.anchorA), load(p.anchorB), p.baseSeparation,
+                                             c.radiusA, c.radiusB);
+            }
+            c.separationMotion = motionCount_;
+        }
         for (int i = 0; i < c.maxPointCount; ++i) {
             const PointBatch& p = c.points[i];
             const Vec3W anchorA = load(p.anchorA), anchorB = load(p.anchorB);
-            const FloatW separation =
-                separationNow(pairMotion, normal, anchorA, anchorB, p.baseSeparation, c.radiusA, c.radiusB);
+            const FloatW separation = p.separation;
 
             const MaskW speculative = separation > zero;
             const FloatW arrive = separation * correction.inverseH;

@@ -8,8 +8,9 @@
 //
 // Within one World::step the solver is used as:
 //   prepare (once) -> for each substep { [resolveCollisions, first substep only], warmStart,
-//   solve(useBias=true) x N, [positions move], [resolveCollisions], relax = solve(useBias=false)
-//   x M, then relaxWherePushing (and joints) while a deep overlap still pushes } -> storeImpulses,
+//   solve(useBias=true) x N, [positions move, followPositions], [resolveCollisions], relax =
+//   solve(useBias=false) x M, then relaxWherePushing (and joints) while a deep overlap still
+//   pushes } -> storeImpulses,
 // with resolveCollisions only when usesRestitution(). Friction and rolling resistance are solved
 // in the relax passes (in the velocity passes when there are none); friction also in the velocity
 // passes of a manifold that impacts. Within a pass a manifold's normal rows are swept until they
@@ -61,10 +62,14 @@ public:
     void prepare(const ContactManager& contactManager, const BodyStorage& bodies, const JointStorage& joints,
                  const Params& params, TaskPool& pool);
     void warmStart(BodyStorage& bodies);
-    // A relax pass (useBias false) returns whether some normal row of an overlap deeper than the
-    // slop still changed a relative velocity by more than kRelaxTolerance: push velocity is still
-    // being taken out. A velocity pass returns false.
-    bool solve(BodyStorage& bodies, bool useBias);
+    // The bodies moved (a substep's position update): the passes after this one see the new
+    // separations. Positions stand still between position updates, so the passes in between share
+    // the bodies' motion since prepare and each manifold's separations.
+    void followPositions(const BodyStorage& bodies);
+    // `passes` passes in a row. After relax passes (useBias false) returns whether in the last some
+    // normal row of an overlap deeper than the slop still changed a relative velocity by more than
+    // kRelaxTolerance: push velocity is still being taken out. After velocity passes, false.
+    bool solve(BodyStorage& bodies, bool useBias, int passes);
     // Up to `passes` relax passes after the configured ones, while the last still took push
     // velocity out, each over only the manifolds with a body whose velocity a row changed by more
     // than kRelaxTolerance in the pass before or in this one so far (World runs kMaxExtraRelaxPasses
@@ -139,6 +144,7 @@ private:
     struct PointBatch {
         FloatW anchorA[3], anchorB[3];
         FloatW baseSeparation;  // m, at prepare
+        FloatW separation;      // m, at the last position update (ManifoldBatch::separationMotion)
         FloatW leverArm;        // m, from the friction centre: the reach of its twist friction
         FloatW normalMass, normalImpulse;
     };
@@ -188,6 +194,7 @@ private:
         std::uint32_t contactIndex[kLanes];
         std::uint8_t pointCount[kLanes];
         std::uint8_t maxPointCount;
+        std::uint32_t separationMotion;  // the motion_ (motionCount_) the points' separations are at
         bool anyFriction, anyRolling, anyRestitution, anyImpact;
         bool stiff;  // holds a manifold with a stiffened spring
     };
@@ -229,6 +236,7 @@ private:
     std::array<std::uint32_t, kColorCount + 1> colorStiffEnd_{};
     TaskPool* pool_ = nullptr;                 // prepare's
     std::vector<BodyRow> velocities_, motion_;  // by solver body
+    std::uint32_t motionCount_ = 0;             // motion_ loaded since prepare, counting prepare's
     std::vector<BodyReference> references_;    // by solver body; entry 0 is the immovable body
     std::vector<std::int32_t> denseToSolver_;  // scratch: -1 where a body has no solver entry
     std::vector<std::uint64_t> bodyColors_;    // scratch: colours used at each solver body

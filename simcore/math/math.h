@@ -32,14 +32,17 @@ inline Mat3 diagonal(const Vec3& d) {
     return m;
 }
 
-// Whether m is s times the identity for some s (zero included): a tensor the same in every frame
-// (R m R^T = m for any rotation R), so it need not be rotated at all.
-inline bool isScaledIdentity(const Mat3& m) {
+// Whether m is zero off its diagonal.
+inline bool isDiagonal(const Mat3& m) {
     for (int column = 0; column < 3; ++column)
         for (int row = 0; row < 3; ++row)
             if (row != column && m[column][row] != 0.0f) return false;
-    return m[0][0] == m[1][1] && m[1][1] == m[2][2];
+    return true;
 }
+
+// Whether m is s times the identity for some s (zero included): a tensor the same in every frame
+// (R m R^T = m for any rotation R), so it need not be rotated at all.
+inline bool isScaledIdentity(const Mat3& m) { return isDiagonal(m) && m[0][0] == m[1][1] && m[1][1] == m[2][2]; }
 
 // Rigid transform: rotate, then translate. Maps local (body) coordinates to world coordinates.
 struct Transform {

@@ -159,6 +159,7 @@ void World::step() {
         run(Stage::Solve, [&] { solveVelocities(plan); });
         run(Stage::IntegratePositions, [&] {
             profile.counters.boundedVelocities += integrator_.integratePositions(bodies_, settings_.integrator, h, threads_.pool());
+            if (plan.solveContacts) contactSolver_.followPositions(bodies_);
         });
         // Before relax, which would slow a body about to hit down to the speed that just closes the
         // gap (speculative contact) and so take away the impact the bounce needs.
@@ -268,22 +269,26 @@ void World::warmStart(const StepPlan& plan) {
     if (plan.solveContacts) contactSolver_.warmStart(bodies_);
 }
 
+// With joints, one contact pass at a time between joint passes (contact-only passes tear a chain's
+// joints); without, all of them in one call.
 void World::solveVelocities(const StepPlan& plan) {
-    for (int i = 0; i < settings_.solver.velocityIterations; ++i) {
+    const int passes = settings_.solver.velocityIterations;
+    const int passesPerCall = plan.solveJoints ? 1 : passes;
+    for (int done = 0; done < passes; done += passesPerCall) {
         if (plan.solveJoints) jointSolver_.solve(bodies_, true);
-        if (plan.solveContacts) contactSolver_.solve(bodies_, true);
+        if (plan.solveContacts) contactSolver_.solve(bodies_, true, passesPerCall);
     }
 }
 
 void World::relaxConstraints(const StepPlan& plan) {
+    const int passes = settings_.solver.positionIterations;
+    int passesPerCall = plan.solveJoints ? 1 : passes;
     bool pushLeft = false;
-    for (int i = 0; i < settings_.solver.positionIterations; ++i) {
+    for (int done = 0; done < passes; done += passesPerCall) {
         if (plan.solveJoints) jointSolver_.solve(bodies_, false);
-        if (plan.relaxContacts) pushLeft = contactSolver_.solve(bodies_, false);
+        if (plan.relaxContacts) pushLeft = contactSolver_.solve(bodies_, false, passesPerCall);
     }
-    // With joints, one contact pass at a time between joint passes (contact-only passes tear a
-    // chain's joints); without, all in one call.
-    const int passesPerCall = plan.solveJoints ? 1 : ContactSolver::kMaxExtraRelaxPasses;
+    passesPerCall = plan.solveJoints ? 1 : ContactSolver::kMaxExtraRelaxPasses;
     for (int done = 0; pushLeft && done < ContactSolver::kMaxExtraRelaxPasses; done += passesPerCall) {
         if (plan.solveJoints) jointSolver_.solve(bodies_, false);
         pushLeft = contactSolver_.relaxWherePushing(bodies_, passesPerCall);
