@@ -214,7 +214,18 @@ void DynamicAabbTree::removeLeaf(std::uint32_t leaf) {
     } else {
         nodes_[grandparent].child2 = sibling;
     }
-    refitAndRotateUpFrom(grandparent);
+    // Only refitted (as Box2D v3 does): insertions rotate, and moveProxy reinserts at once.
+    // Rotating here too cost pile1k 3 % of its step's instructions and saved its queries 1 %.
+    refitUpFrom(grandparent);
+}
+
+// Restores bounds and heights from `index` to the root.
+void DynamicAabbTree::refitUpFrom(std::uint32_t index) {
+    for (; index != kNull; index = nodes_[index].parent) {
+        Node& node = nodes_[index];
+        node.box = unionOf(nodes_[node.child1].box, nodes_[node.child2].box);
+        node.height = 1 + std::max(nodes_[node.child1].height, nodes_[node.child2].height);
+    }
 }
 
 // Restores bounds and heights from `index` to the root, rotating each node on the way. Every

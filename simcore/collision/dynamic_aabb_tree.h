@@ -178,6 +178,7 @@ private:
     void removeLeaf(std::uint32_t leaf);
     std::uint32_t findBestSibling(const Aabb& box) const;
     void refitAndRotateUpFrom(std::uint32_t index);
+    void refitUpFrom(std::uint32_t index);
     std::uint32_t rotate(std::uint32_t index);  // returns the node the moved child went into, or kNull
     void swapWithGrandchild(std::uint32_t parent, std::uint32_t child, std::uint32_t grandchild);
 
