@@ -31,6 +31,11 @@ inline void setLanes(FloatW (&wide)[6], int lane, const Mat3& m) {  // symmetric
 
 SIMCORE_SIMD_INLINE Vec3W load(const FloatW (&wide)[3]) { return {wide[0], wide[1], wide[2]}; }
 SIMCORE_SIMD_INLINE SymMat3W load(const FloatW (&wide)[6]) { return {wide[0], wide[1], wide[2], wide[3], wide[4], wide[5]}; }
+SIMCORE_SIMD_INLINE void store(FloatW (&wide)[3], const Vec3W& v) {
+    wide[0] = v.x;
+    wide[1] = v.y;
+    wide[2] = v.z;
+}
 
 // The two bodies of every lane, gathered from the solver's body rows and scattered back after.
 struct WideBodies {

@@ -309,6 +309,8 @@ void ContactSolver::computeEffectiveMasses(ManifoldBatch& c) {
     for (int i = 0; i < c.maxPointCount; ++i) {
         PointBatch& p = c.points[i];
         const MaskW exists = pointCount > FloatW::splat(static_cast<float>(i));
+        store(p.angularA, cross(load(p.anchorA), normal));
+        store(p.angularB, cross(load(p.anchorB), normal));
         p.normalMass = select(exists, effectiveMass(inverseMassSum, inverseInertiaA, inverseInertiaB, load(p.anchorA),
                                                     load(p.anchorB), normal),
                               zero);
@@ -465,7 +467,6 @@ bool ContactSolver::solvePass(bool useBias, PassScope scope) {
 
         // Each point's velocity target for this pass: positions do not move within it.
         struct NormalRow {
-            Vec3W angularA, angularB;
             FloatW bias, massScale, impulseScale, impulseAtStart;
             MaskW deep;
         };
@@ -481,7 +482,6 @@ bool ContactSolver::solvePass(bool useBias, PassScope scope) {
         }
         for (int i = 0; i < c.maxPointCount; ++i) {
             const PointBatch& p = c.points[i];
-            const Vec3W anchorA = load(p.anchorA), anchorB = load(p.anchorB);
             const FloatW separation = p.separation;
 
             const MaskW speculative = separation > zero;
@@ -495,8 +495,7 @@ bool ContactSolver::solvePass(bool useBias, PassScope scope) {
                 const FloatW overlap = simd::min(separation + correction.linearSlop, zero);
                 bias = select(speculative, arrive, simd::max(correction.baumgarte * overlap, correction.maxPush));
             }
-            normalRows[i] = {cross(anchorA, normal), cross(anchorB, normal), bias, massScale, impulseScale, p.normalImpulse,
-                             separation < deepOverlap};
+            normalRows[i] = {bias, massScale, impulseScale, p.normalImpulse, separation < deepOverlap};
         }
 
         // One point alone is solved exactly in one sweep; more are swept while they still move each other.
@@ -506,12 +505,13 @@ bool ContactSolver::solvePass(bool useBias, PassScope scope) {
             for (int i = 0; i < c.maxPointCount; ++i) {
                 PointBatch& p = c.points[i];
                 const NormalRow& r = normalRows[i];
-                const FloatW vn = alongAxis(v, normal, r.angularA, r.angularB);
+                const Vec3W angularA = load(p.angularA), angularB = load(p.angularB);
+                const FloatW vn = alongAxis(v, normal, angularA, angularB);
                 const FloatW lambda = -(p.normalMass * r.massScale * (vn + r.bias)) - r.impulseScale * p.normalImpulse;
                 const FloatW accumulated = simd::max(p.normalImpulse + lambda, zero);
                 const FloatW delta = accumulated - p.normalImpulse;
                 p.normalImpulse = accumulated;
-                applyImpulse(v, normal * delta, r.angularA * delta, r.angularB * delta, c.inverseMassA, c.inverseMassB,
+                applyImpulse(v, normal * delta, angularA * delta, angularB * delta, c.inverseMassA, c.inverseMassB,
                              inverseInertiaA, inverseInertiaB);
                 // The velocity this row changed beyond the tolerance (delta / normalMass, kept as a product).
                 sweepExcess = simd::max(sweepExcess, simd::max(delta, -delta) - sweepTolerance * p.normalMass);

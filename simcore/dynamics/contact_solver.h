@@ -140,9 +140,10 @@ private:
     static constexpr std::size_t kBatchGrain = 4;
 
     // One contact point in every lane: anchors relative to each centre of mass at prepare (world
-    // axes), the normal row's effective mass and accumulated impulse.
+    // axes), the normal row's levers, effective mass and accumulated impulse.
     struct PointBatch {
         FloatW anchorA[3], anchorB[3];
+        FloatW angularA[3], angularB[3];  // anchor x normal: the normal row's lever on each body
         FloatW baseSeparation;  // m, at prepare
         FloatW separation;      // m, at the last position update (ManifoldBatch::separationMotion)
         FloatW leverArm;        // m, from the friction centre: the reach of its twist friction
