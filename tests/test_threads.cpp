@@ -11,6 +11,7 @@
 #include "simcore/io/scene_io.h"
 #include "simcore/parallel/task_pool.h"
 #include "simcore/parallel/worker_tuner.h"
+#include "simcore/world/world.h"
 
 #include <QtTest>
 
@@ -103,6 +104,7 @@ private slots:
     void tunerTriesBothWaysThenRunsTheFaster();
     void tunerProbesLessOftenWhileItsChoiceHolds();
     void tunerSwitchesWhenTheOtherWayGetsFaster();
+    void worldThreadsFallBackWhenStageChoicesAddUpToASlowerStep();
     void stepIsBitIdenticalForAnyThreadCount_data();
     void stepIsBitIdenticalForAnyThreadCount();
     void changingThreadsMidRunChangesNothing();
@@ -327,6 +329,38 @@ void TestThreads::tunerSwitchesWhenTheOtherWayGetsFaster() {
     int changes = 0;
     for (std::size_t i = 1; i < near.size(); ++i) changes += near[i] != near[i - 1];
     QVERIFY2(changes <= 16, qPrintable(QString::number(changes)));
+}
+
+void TestThreads::worldThreadsFallBackWhenStageChoicesAddUpToASlowerStep() {
+    // A machine where each stage alone runs faster with workers, given the other's choice, but the
+    // step does not: collide with workers leaves its data split between the cores, and prepare
+    // inline then takes twice as long (2 ms, not 1); with workers it takes 1.3 ms either way.
+    // Stage by stage that picks workers for both (0.9 + 1.3 ms); the step inline takes 2 ms.
+    WorldThreads threads;
+    threads.configure(2);
+    double lateMs = 0.0;
+    int lateSteps = 0;
+    for (int step = 0; step < 2000; ++step) {
+        StepProfile profile;
+        profile.skipped.fill(StageSkip::NothingAwake);
+        profile.skipped[static_cast<std::size_t>(Stage::Collide)] = StageSkip::Ran;
+        profile.skipped[static_cast<std::size_t>(Stage::Prepare)] = StageSkip::Ran;
+        const bool collideWithWorkers = threads.startStage(Stage::Collide);
+        const bool prepareWithWorkers = threads.startStage(Stage::Prepare);
+        const double collideMs = collideWithWorkers ? 0.9 : 1.0;
+        const double prepareMs = prepareWithWorkers ? 1.3 : collideWithWorkers ? 2.0 : 1.0;
+        profile.stageMs[static_cast<std::size_t>(Stage::Collide)] = collideMs;
+        profile.stageMs[static_cast<std::size_t>(Stage::Prepare)] = prepareMs;
+        threads.learn(profile);
+        if (step >= 1000) {
+            lateMs += collideMs + prepareMs;
+            ++lateSteps;
+        }
+    }
+    // Inline, but for the probes that keep checking (at most one step in kMaxProbeInterval, each
+    // at most 1.3 ms slower).
+    const double meanMs = lateMs / lateSteps;
+    QVERIFY2(meanMs < 2.0 + 2.0 * 1.3 / WorkerTuner<1>::kMaxProbeInterval, qPrintable(QString::number(meanMs)));
 }
 
 void TestThreads::stepIsBitIdenticalForAnyThreadCount_data() {

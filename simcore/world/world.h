@@ -60,7 +60,12 @@ struct ContactLoad {
     float normalForce = 0.0f;  // N: their points' normal impulses over the last substep, per second
 };
 
-// The world's worker threads, and which stages use them (WorkerTuner). A copied world gets a pool
+// The world's worker threads, and which stages use them, learnt at two levels (WorkerTuner):
+// whether a step uses workers at all, from the whole step's time, and in the steps that do, which
+// stages. Choices made stage by stage alone can all look right and add up to a slower step: a
+// stage run with workers leaves its data in both cores' caches for the next, which then looks
+// slower inline than it is (2-core machine, 2026-12-06: pyramid10 at 2 threads took 1.18x the
+// time of 1 thread stage by stage, 1.02x with the step's own choice). A copied world gets a pool
 // of its own with as many threads, made when it first steps, and learns anew: a copy kept as a
 // snapshot holds no threads.
 class WorldThreads {
@@ -71,7 +76,8 @@ public:
         if (this != &other) {
             threads_ = other.threads_;
             pool_.reset();
-            tuner_ = {};
+            stepTuner_ = {};
+            stageTuner_ = {};
         }
         return *this;
     }
@@ -83,7 +89,8 @@ public:
     void configure(int threads) {
         threads_ = threads;
         pool_.reset();
-        tuner_ = {};
+        stepTuner_ = {};
+        stageTuner_ = {};
     }
     TaskPool& pool() const {
         if (!pool_) pool_ = std::make_unique<TaskPool>(threads());
@@ -92,24 +99,32 @@ public:
 
     // Sets on the pool whether `stage` runs with workers this step, and returns it.
     bool startStage(Stage stage) const {
-        const bool withWorkers = pool().threadCount() > 1 && tuner_.useWorkers(index(stage));
+        const bool withWorkers = stepUsesWorkers() && stageTuner_.useWorkers(index(stage));
         pool().setWorkersEnabled(withWorkers);
         return withWorkers;
     }
     // After a step: what its stages took, as they ran; outside a step the workers are on again.
     void learn(const StepProfile& profile) {
         TaskPool& workers = pool();
-        if (workers.threadCount() > 1)
-            for (std::size_t s = 0; s < kStageCount; ++s)
-                if (profile.skipped[s] == StageSkip::Ran) tuner_.record(s, profile.stageMs[s]);
+        if (workers.threadCount() > 1) {
+            double stepMs = 0.0;
+            for (std::size_t s = 0; s < kStageCount; ++s) {
+                if (profile.skipped[s] != StageSkip::Ran) continue;
+                stepMs += profile.stageMs[s];
+                if (stepUsesWorkers()) stageTuner_.record(s, profile.stageMs[s]);
+            }
+            stepTuner_.record(0, stepMs);
+        }
         workers.setWorkersEnabled(true);
     }
 
 private:
     static std::size_t index(Stage stage) { return static_cast<std::size_t>(stage); }
+    bool stepUsesWorkers() const { return pool().threadCount() > 1 && stepTuner_.useWorkers(0); }
     std::optional<int> threads_;                 // settings.threads (0: one per core)
     mutable std::unique_ptr<TaskPool> pool_;
-    WorkerTuner<kStageCount> tuner_;
+    WorkerTuner<1> stepTuner_;                   // the step as a whole
+    WorkerTuner<kStageCount> stageTuner_;        // each stage, learnt in the steps that use workers
 };
 
 struct NonFiniteBody {
