@@ -282,16 +282,17 @@ void World::solveVelocities(const StepPlan& plan) {
 
 void World::relaxConstraints(const StepPlan& plan) {
     const int passes = settings_.solver.positionIterations;
-    int passesPerCall = plan.solveJoints ? 1 : passes;
+    const int passesPerCall = plan.solveJoints ? 1 : passes;
     bool pushLeft = false;
     for (int done = 0; done < passes; done += passesPerCall) {
         if (plan.solveJoints) jointSolver_.solve(bodies_, false);
         if (plan.relaxContacts) pushLeft = contactSolver_.solve(bodies_, false, passesPerCall);
     }
-    passesPerCall = plan.solveJoints ? 1 : ContactSolver::kMaxExtraRelaxPasses;
-    for (int done = 0; pushLeft && done < ContactSolver::kMaxExtraRelaxPasses; done += passesPerCall) {
+    const int extraPasses = ContactSolver::kMaxExtraRelaxPasses;
+    const int extraPassesPerCall = plan.solveJoints ? 1 : extraPasses;
+    for (int done = 0; pushLeft && done < extraPasses; done += extraPassesPerCall) {
         if (plan.solveJoints) jointSolver_.solve(bodies_, false);
-        pushLeft = contactSolver_.relaxWherePushing(bodies_, passesPerCall);
+        pushLeft = contactSolver_.relaxWherePushing(bodies_, extraPassesPerCall);
     }
 }
 
