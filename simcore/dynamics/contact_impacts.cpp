@@ -76,8 +76,8 @@ void ContactSolver::resolveCollisions(BodyStorage& bodies, ImpactTiming timing) 
             const FloatW movesA = select(c.inverseMassA > zero, one, zero), movesB = select(c.inverseMassB > zero, one, zero);
             const FloatW halfStepApproach = FloatW::splat(halfStep) * dot(gravity, normal) * (movesB - movesA);
             const FloatW target = -(c.restitution * (vn + halfStepApproach)) - halfStepApproach;
-            const FloatW mass = effectiveMass(c.inverseMassA + c.inverseMassB, inverseInertiaA, inverseInertiaB, centreA,
-                                              centreB, normal);
+            const FloatW mass =
+                effectiveMass(c.inverseMassA + c.inverseMassB, inverseInertiaA, inverseInertiaB, angularA, angularB);
             const FloatW normalImpulse = select(any, simd::max(mass * (target - vn), zero), zero);
             applyImpulse(v, normal * normalImpulse, angularA * normalImpulse, angularB * normalImpulse, c.inverseMassA,
                          c.inverseMassB, inverseInertiaA, inverseInertiaB);

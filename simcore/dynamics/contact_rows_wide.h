@@ -226,11 +226,10 @@ SIMCORE_SIMD_INLINE FrictionRowsW frictionRows(const Batch& c) {
             c.inverseMassB,         load(c.inverseInertiaA), load(c.inverseInertiaB)};
 }
 
-// 1 / (J M^-1 J^T) of a row along `axis` at the two anchors; zero where neither body can move.
+// 1 / (J M^-1 J^T) of a row with levers anchor x axis on each body; zero where neither body can move.
 SIMCORE_SIMD_INLINE FloatW effectiveMass(FloatW inverseMassSum, const SymMat3W& inverseInertiaA,
-                                         const SymMat3W& inverseInertiaB, const Vec3W& anchorA, const Vec3W& anchorB,
-                                         const Vec3W& axis) {
-    const Vec3W angularA = cross(anchorA, axis), angularB = cross(anchorB, axis);
+                                         const SymMat3W& inverseInertiaB, const Vec3W& angularA,
+                                         const Vec3W& angularB) {
     const FloatW k = inverseMassSum + dot(angularA, inverseInertiaA * angularA) + dot(angularB, inverseInertiaB * angularB);
     const FloatW zero = FloatW::zero();
     return select(k > zero, FloatW::splat(1.0f) / simd::max(k, FloatW::splat(1e-30f)), zero);

@@ -309,11 +309,11 @@ void ContactSolver::computeEffectiveMasses(ManifoldBatch& c) {
     for (int i = 0; i < c.maxPointCount; ++i) {
         PointBatch& p = c.points[i];
         const MaskW exists = pointCount > FloatW::splat(static_cast<float>(i));
-        store(p.angularA, cross(load(p.anchorA), normal));
-        store(p.angularB, cross(load(p.anchorB), normal));
-        p.normalMass = select(exists, effectiveMass(inverseMassSum, inverseInertiaA, inverseInertiaB, load(p.anchorA),
-                                                    load(p.anchorB), normal),
-                              zero);
+        const Vec3W angularA = cross(load(p.anchorA), normal), angularB = cross(load(p.anchorB), normal);
+        store(p.angularA, angularA);
+        store(p.angularB, angularB);
+        p.normalMass =
+            select(exists, effectiveMass(inverseMassSum, inverseInertiaA, inverseInertiaB, angularA, angularB), zero);
     }
     if (!c.anyFriction) return;
     const MaskW hasFriction = c.friction > zero;

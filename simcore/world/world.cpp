@@ -269,31 +269,41 @@ void World::warmStart(const StepPlan& plan) {
     if (plan.solveContacts) contactSolver_.warmStart(bodies_);
 }
 
-// With joints, one contact pass at a time between joint passes (contact-only passes tear a chain's
-// joints); without, all of them in one call.
-void World::solveVelocities(const StepPlan& plan) {
-    const int passes = settings_.solver.velocityIterations;
-    const int passesPerCall = plan.solveJoints ? 1 : passes;
+namespace {
+
+// Up to `passes` contact passes, `contactPasses(n)` running n of them and saying whether to go on:
+// with joints one at a time, each after a joint pass (contact-only passes tear a chain's joints);
+// without, all in one call.
+template <class ContactPasses>
+void interleaveWithJoints(bool withJoints, JointSolver& jointSolver, BodyStorage& bodies, bool useBias, int passes,
+                          ContactPasses&& contactPasses) {
+    const int passesPerCall = withJoints ? 1 : passes;
     for (int done = 0; done < passes; done += passesPerCall) {
-        if (plan.solveJoints) jointSolver_.solve(bodies_, true);
-        if (plan.solveContacts) contactSolver_.solve(bodies_, true, passesPerCall);
+        if (withJoints) jointSolver.solve(bodies, useBias);
+        if (!contactPasses(passesPerCall)) return;
     }
 }
 
+}  // namespace
+
+void World::solveVelocities(const StepPlan& plan) {
+    interleaveWithJoints(plan.solveJoints, jointSolver_, bodies_, true, settings_.solver.velocityIterations,
+                         [&](int passes) {
+                             if (plan.solveContacts) contactSolver_.solve(bodies_, true, passes);
+                             return true;
+                         });
+}
+
 void World::relaxConstraints(const StepPlan& plan) {
-    const int passes = settings_.solver.positionIterations;
-    const int passesPerCall = plan.solveJoints ? 1 : passes;
     bool pushLeft = false;
-    for (int done = 0; done < passes; done += passesPerCall) {
-        if (plan.solveJoints) jointSolver_.solve(bodies_, false);
-        if (plan.relaxContacts) pushLeft = contactSolver_.solve(bodies_, false, passesPerCall);
-    }
-    const int extraPasses = ContactSolver::kMaxExtraRelaxPasses;
-    const int extraPassesPerCall = plan.solveJoints ? 1 : extraPasses;
-    for (int done = 0; pushLeft && done < extraPasses; done += extraPassesPerCall) {
-        if (plan.solveJoints) jointSolver_.solve(bodies_, false);
-        pushLeft = contactSolver_.relaxWherePushing(bodies_, extraPassesPerCall);
-    }
+    interleaveWithJoints(plan.solveJoints, jointSolver_, bodies_, false, settings_.solver.positionIterations,
+                         [&](int passes) {
+                             if (plan.relaxContacts) pushLeft = contactSolver_.solve(bodies_, false, passes);
+                             return true;
+                         });
+    if (!pushLeft) return;
+    interleaveWithJoints(plan.solveJoints, jointSolver_, bodies_, false, ContactSolver::kMaxExtraRelaxPasses,
+                         [&](int passes) { return contactSolver_.relaxWherePushing(bodies_, passes); });
 }
 
 void World::storeImpulses(const StepPlan& plan, StepCounters& counters) {

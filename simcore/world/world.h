@@ -107,11 +107,12 @@ public:
     void learn(const StepProfile& profile) {
         TaskPool& workers = pool();
         if (workers.threadCount() > 1) {
+            const bool stagesChose = stepUsesWorkers();
             double stepMs = 0.0;
             for (std::size_t s = 0; s < kStageCount; ++s) {
                 if (profile.skipped[s] != StageSkip::Ran) continue;
                 stepMs += profile.stageMs[s];
-                if (stepUsesWorkers()) stageTuner_.record(s, profile.stageMs[s]);
+                if (stagesChose) stageTuner_.record(s, profile.stageMs[s]);
             }
             stepTuner_.record(0, stepMs);
         }
