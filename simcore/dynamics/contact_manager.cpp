@@ -353,6 +353,11 @@ void ContactManager::updateManifolds(const BodyStorage& bodies, const BroadPhase
         if (changes_[c] == PairChange::LosesPoints) releaseManifold(contacts_[c]);
         if (changes_[c] == PairChange::GainsPoints) gainingPoints_.push_back(static_cast<std::uint32_t>(c));
     }
+    // Grown once for all of them: a scene's first step takes a record for every touching pair
+    // (20 540 in pyramid20), and growing one record at a time copied the pool over and over.
+    const std::size_t recordsNeeded = manifolds_.size() + gainingPoints_.size() -
+                                      std::min(gainingPoints_.size(), freeManifolds_.size());
+    if (recordsNeeded > manifolds_.capacity()) manifolds_.reserve(std::max(recordsNeeded, 2 * manifolds_.capacity()));
     for (const std::uint32_t c : gainingPoints_) takeManifold(contacts_[c]);
     pool.parallelFor(gainingPoints_.size(), kNarrowPhaseGrain, [&](std::size_t, std::size_t begin, std::size_t end) {
         for (std::size_t k = begin; k < end; ++k) {
