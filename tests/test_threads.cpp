@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <chrono>
 #include <cstring>
 #include <filesystem>
@@ -279,15 +280,19 @@ void TestThreads::tunerTriesBothWaysThenRunsTheFaster() {
     QFETCH(double, workersMs);
     QFETCH(bool, workersWin);
     WorkerTuner<1> tuner;
-    // The first step (which makes every pair) is ten times the rest: it must not decide.
+    // The first step (which makes every pair) is ten times the rest: it must not decide, so it is
+    // not learnt from. Then one step each way, and the faster runs.
     const std::vector<bool> ways = tune(
         tuner, 600, [&](int step) { return step == 0 ? 10.0 * inlineMs : inlineMs; },
         [&](int) { return workersMs; });
     QCOMPARE(ways[0], false);
-    QCOMPARE(ways[1], true);
-    // The outlier may pick the wrong way for the shortest interval; from the first probe on (step
-    // 10), the other way runs only in probes, fewer and fewer as they confirm the choice.
-    const int firstProbe = 2 + WorkerTuner<1>::kMinProbeInterval;
+    QCOMPARE(ways[1], false);
+    QCOMPARE(ways[2], true);
+    const std::vector<bool> chosen(ways.begin() + 3, ways.begin() + 3 + WorkerTuner<1>::kMinProbeInterval);
+    QCOMPARE(std::count(chosen.begin(), chosen.end(), workersWin), std::ptrdiff_t{WorkerTuner<1>::kMinProbeInterval});
+    // From the first probe on (step 11), the other way runs only in probes, fewer and fewer as they
+    // confirm the choice.
+    const int firstProbe = 3 + WorkerTuner<1>::kMinProbeInterval;
     const std::vector<int> other = stepsWith(std::vector<bool>(ways.begin() + firstProbe + 1, ways.end()), !workersWin);
     QVERIFY2(other.size() <= 8, qPrintable(QString::number(other.size())));
     QVERIFY(other.size() >= 3);  // but it keeps checking
@@ -297,16 +302,27 @@ void TestThreads::tunerTriesBothWaysThenRunsTheFaster() {
 void TestThreads::tunerProbesLessOftenWhileItsChoiceHolds() {
     using Tuner = WorkerTuner<1>;
     Tuner tuner;
+    // Each probe loses 2 ms against 1 ms steps the chosen way.
     const std::vector<bool> ways = tune(tuner, 2000, [](int) { return 1.0; }, [](int) { return 3.0; });
     const std::vector<int> probes = stepsWith(ways, true);  // the first is the learning step
     QVERIFY(probes.size() >= 5);
+    const int coveringSteps = static_cast<int>(std::lround(2.0 / Tuner::kProbeCostShare));  // 100
     int interval = Tuner::kMinProbeInterval;
     for (std::size_t p = 1; p < probes.size(); ++p) {
-        // A probe, then `interval` steps the chosen way, then the next probe.
-        QCOMPARE(probes[p] - probes[p - 1], interval + 1);
+        // A probe, then `interval` steps the chosen way, and after a probe that lost, as many more
+        // as its loss needs to be kProbeCostShare of their time; then the next probe.
+        const int chosenSteps = p == 1 ? interval : std::max(interval, coveringSteps);
+        QCOMPARE(probes[p] - probes[p - 1], chosenSteps + 1);
         interval = std::min(2 * interval, Tuner::kMaxProbeInterval);
     }
     QCOMPARE(interval, Tuner::kMaxProbeInterval);
+    // A probe that loses 20 ms against 0.01 ms steps waits for 1 s of them (100 000 steps): the tuner spends at
+    // most kProbeCostShare of a tiny step's time on probes.
+    Tuner tiny;
+    const std::vector<bool> tinyWays = tune(tiny, 30000, [](int) { return 0.01; }, [](int) { return 20.01; });
+    const std::vector<int> tinyProbes = stepsWith(tinyWays, true);
+    QCOMPARE(tinyProbes.size(), std::size_t{2});  // the learning step and one probe
+    QCOMPARE(tinyProbes[1], 2 + Tuner::kMinProbeInterval + 1);
 }
 
 void TestThreads::tunerSwitchesWhenTheOtherWayGetsFaster() {
