@@ -106,6 +106,7 @@ private slots:
     void tunerProbesLessOftenWhileItsChoiceHolds();
     void tunerSwitchesWhenTheOtherWayGetsFaster();
     void worldThreadsFallBackWhenStageChoicesAddUpToASlowerStep();
+    void worldThreadsUseWorkersSoonWhenEveryStageGains();
     void stepIsBitIdenticalForAnyThreadCount_data();
     void stepIsBitIdenticalForAnyThreadCount();
     void changingThreadsMidRunChangesNothing();
@@ -377,6 +378,34 @@ void TestThreads::worldThreadsFallBackWhenStageChoicesAddUpToASlowerStep() {
     // at most 1.3 ms slower).
     const double meanMs = lateMs / lateSteps;
     QVERIFY2(meanMs < 2.0 + 2.0 * 1.3 / WorkerTuner<1>::kMaxProbeInterval, qPrintable(QString::number(meanMs)));
+}
+
+void TestThreads::worldThreadsUseWorkersSoonWhenEveryStageGains() {
+    // A machine where both stages take half the time with workers. The step tuner's learning step
+    // with workers must run its stages with them, or it sees no gain and keeps the step inline
+    // until a probe happens to meet stages that have learnt (pyramid20 ran its first 28 to 60
+    // steps on one thread).
+    WorldThreads threads;
+    threads.configure(2);
+    int inlineSteps = 0;
+    for (int step = 0; step < 100; ++step) {
+        StepProfile profile;
+        profile.skipped.fill(StageSkip::NothingAwake);
+        double stepMs = 0.0;
+        bool anyWorkers = false;
+        for (const Stage stage : {Stage::Collide, Stage::Prepare}) {
+            profile.skipped[static_cast<std::size_t>(stage)] = StageSkip::Ran;
+            const bool withWorkers = threads.startStage(stage);
+            profile.stageMs[static_cast<std::size_t>(stage)] = withWorkers ? 0.5 : 1.0;
+            stepMs += profile.stageMs[static_cast<std::size_t>(stage)];
+            anyWorkers = anyWorkers || withWorkers;
+        }
+        threads.learn(profile);
+        if (step >= 3 && !anyWorkers) ++inlineSteps;
+    }
+    // From the fourth step on, every stage inline only where the stages learn their inline time
+    // (one step) and in probes that fall together (5 steps here; learning inline first, 29).
+    QVERIFY2(inlineSteps <= 8, qPrintable(QString::number(inlineSteps)));
 }
 
 void TestThreads::stepIsBitIdenticalForAnyThreadCount_data() {

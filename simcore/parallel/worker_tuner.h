@@ -35,11 +35,17 @@ public:
     static constexpr double kAveraging = 0.25;  // weight of a new step's time in the estimate
     static constexpr double kProbeCostShare = 0.02;
 
+    // Which way a stage is learnt first: it runs that way in its first two steps (the first not
+    // learnt from), then the other way once, then the faster.
+    enum class FirstWay { Inline, Workers };
+    WorkerTuner() = default;
+    explicit WorkerTuner(FirstWay firstWay) : first_(firstWay == FirstWay::Workers ? kWorkers : kInline) {}
+
     // Whether this step runs `stage` with workers.
     bool useWorkers(std::size_t stage) const {
         const StageState& state = states_[stage];
-        if (state.estimateMs[kInline] < 0.0) return false;  // learning: one step each way first
-        if (state.estimateMs[kWorkers] < 0.0) return true;
+        if (state.estimateMs[first_] < 0.0) return first_ == kWorkers;  // learning: one step each way first
+        if (state.estimateMs[1 - first_] < 0.0) return first_ != kWorkers;
         return state.probeDue() ? !state.workersChosen : state.workersChosen;
     }
 
@@ -93,6 +99,7 @@ private:
         bool measuredBothWays() const { return estimateMs[kInline] >= 0.0 && estimateMs[kWorkers] >= 0.0; }
         bool probeDue() const { return stepsToProbe == 0 && msToProbe <= 0.0; }
     };
+    int first_ = kInline;  // or kWorkers
     std::array<StageState, Stages> states_{};
 };
 

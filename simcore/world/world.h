@@ -77,7 +77,7 @@ public:
             threads_ = other.threads_;
             pool_.reset();
             stepTuner_ = {};
-            stageTuner_ = {};
+            stageTuner_ = StageTuner(kStagesFirstWay);
         }
         return *this;
     }
@@ -90,7 +90,7 @@ public:
         threads_ = threads;
         pool_.reset();
         stepTuner_ = {};
-        stageTuner_ = {};
+        stageTuner_ = StageTuner(kStagesFirstWay);
     }
     TaskPool& pool() const {
         if (!pool_) pool_ = std::make_unique<TaskPool>(threads());
@@ -124,8 +124,14 @@ private:
     bool stepUsesWorkers() const { return pool().threadCount() > 1 && stepTuner_.useWorkers(0); }
     std::optional<int> threads_;                 // settings.threads (0: one per core)
     mutable std::unique_ptr<TaskPool> pool_;
-    WorkerTuner<1> stepTuner_;                   // the step as a whole
-    WorkerTuner<kStageCount> stageTuner_;        // each stage, learnt in the steps that use workers
+    using StageTuner = WorkerTuner<kStageCount>;
+    // A stage learns in the steps that use workers, workers first: the step's own learning step
+    // with workers then runs its stages with them. Learnt inline first, they ran inline in that step
+    // and the probes after it, so to the step tuner the workers looked no faster than inline, and
+    // pyramid20 ran its first 28 to 60 steps on one thread (2026-12-06).
+    static constexpr StageTuner::FirstWay kStagesFirstWay = StageTuner::FirstWay::Workers;
+    WorkerTuner<1> stepTuner_;                   // the step as a whole, inline first
+    StageTuner stageTuner_{kStagesFirstWay};     // each stage, learnt in the steps that use workers
 };
 
 struct NonFiniteBody {
