@@ -17,8 +17,8 @@
 
 #include <algorithm>
 #include <atomic>
-#include <cmath>
 #include <chrono>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <map>
@@ -317,8 +317,8 @@ void TestThreads::tunerProbesLessOftenWhileItsChoiceHolds() {
         interval = std::min(2 * interval, Tuner::kMaxProbeInterval);
     }
     QCOMPARE(interval, Tuner::kMaxProbeInterval);
-    // A probe that loses 20 ms against 0.01 ms steps waits for 1 s of them (100 000 steps): the tuner spends at
-    // most kProbeCostShare of a tiny step's time on probes.
+    // A probe that loses 20 ms against 0.01 ms steps waits for 1 s of them (100 000 steps): the
+    // tuner spends at most kProbeCostShare of a tiny step's time on probes.
     Tuner tiny;
     const std::vector<bool> tinyWays = tune(tiny, 30000, [](int) { return 0.01; }, [](int) { return 20.01; });
     const std::vector<int> tinyProbes = stepsWith(tinyWays, true);
@@ -391,13 +391,11 @@ void TestThreads::worldThreadsUseWorkersSoonWhenEveryStageGains() {
     for (int step = 0; step < 100; ++step) {
         StepProfile profile;
         profile.skipped.fill(StageSkip::NothingAwake);
-        double stepMs = 0.0;
         bool anyWorkers = false;
         for (const Stage stage : {Stage::Collide, Stage::Prepare}) {
             profile.skipped[static_cast<std::size_t>(stage)] = StageSkip::Ran;
             const bool withWorkers = threads.startStage(stage);
             profile.stageMs[static_cast<std::size_t>(stage)] = withWorkers ? 0.5 : 1.0;
-            stepMs += profile.stageMs[static_cast<std::size_t>(stage)];
             anyWorkers = anyWorkers || withWorkers;
         }
         threads.learn(profile);

@@ -76,8 +76,7 @@ public:
         if (this != &other) {
             threads_ = other.threads_;
             pool_.reset();
-            stepTuner_ = {};
-            stageTuner_ = StageTuner(kStagesFirstWay);
+            forgetTimings();
         }
         return *this;
     }
@@ -92,8 +91,7 @@ public:
     void configure(int threads) {
         threads_ = threads;
         pool_ = std::make_unique<TaskPool>(threads);
-        stepTuner_ = {};
-        stageTuner_ = StageTuner(kStagesFirstWay);
+        forgetTimings();
     }
     TaskPool& pool() const {
         if (!pool_) pool_ = std::make_unique<TaskPool>(threads());
@@ -125,6 +123,10 @@ public:
 private:
     static std::size_t index(Stage stage) { return static_cast<std::size_t>(stage); }
     bool stepUsesWorkers() const { return pool().threadCount() > 1 && stepTuner_.useWorkers(0); }
+    void forgetTimings() {
+        stepTuner_ = {};
+        stageTuner_ = StageTuner(kStagesFirstWay);
+    }
     std::optional<int> threads_;                 // settings.threads (0: one per core)
     mutable std::unique_ptr<TaskPool> pool_;
     using StageTuner = WorkerTuner<kStageCount>;
