@@ -57,10 +57,11 @@ struct KeptManifold {
 // contact gains points and given back when it loses them, and a pair without points costs only
 // its Contact.
 struct ManifoldRecord {
+    // The solver's part first: prepare and storeImpulses read or write only these, fetched ahead.
     ContactManifold manifold;             // world frame, as the narrow phase made or moved it this step
-    KeptManifold kept;
     std::array<ContactImpulse, kMaxManifoldPoints> impulses{};
     FrictionImpulse frictionImpulse;
+    KeptManifold kept;
 };
 
 struct Contact {
