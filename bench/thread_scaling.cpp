@@ -11,6 +11,7 @@
 #include "simcore/io/scene_io.h"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <ctime>
@@ -165,6 +166,39 @@ Run runScene(simcore::Scene scene, int threads, int steps) {
     return {ms / steps, test_support::stateHash(built.world)};
 }
 
+double median(std::vector<double> values);
+
+// ns for a cache line to go from one thread to another and back: two threads pass a counter back
+// and forth, the median of several batches of round trips. On the project's 2-core VM the host
+// mostly runs the two virtual CPUs on cores that share no cache (2026-12-06: round trips 400-480 ns,
+// a line written on one core read on the other in 110-150 ns against 5-19 ns on its own), and
+// then every body and manifold one stage's worker hands to another's costs that: pyramid20 ran
+// 1.1-1.2x faster at 2 threads than at 1, each stage taking 40-75% more CPU time in all. Once, a
+// line crossed in 22 ns, and pyramid20 ran 1.7x faster (a build timing each stage) with no more
+// CPU time than at 1 thread. So each multi-threaded run records it.
+double roundTripNs() {
+    constexpr int kBatches = 9, kTripsPerBatch = 2000;
+    alignas(64) std::atomic<int> counter{0};
+    std::thread partner([&] {
+        for (int n = 1; n < 2 * kBatches * kTripsPerBatch; n += 2) {
+            while (counter.load(std::memory_order_acquire) != n) {}
+            counter.store(n + 1, std::memory_order_release);
+        }
+    });
+    std::vector<double> batches;
+    int n = 0;
+    for (int b = 0; b < kBatches; ++b) {
+        const auto start = Clock::now();
+        for (int t = 0; t < kTripsPerBatch; ++t, n += 2) {
+            counter.store(n + 1, std::memory_order_release);
+            while (counter.load(std::memory_order_acquire) != n + 2) {}
+        }
+        batches.push_back(std::chrono::duration<double, std::nano>(Clock::now() - start).count() / kTripsPerBatch);
+    }
+    partner.join();
+    return median(batches);
+}
+
 double median(std::vector<double> values) {
     std::sort(values.begin(), values.end());
     const std::size_t n = values.size();
@@ -211,6 +245,7 @@ std::string msText(double ms) { return fixed(ms, ms < 0.1 ? 4 : ms < 10.0 ? 3 : 
 
 struct Cell {
     std::vector<double> ms;
+    std::vector<double> roundTripNs;  // measured before each run (multi-threaded runs only)
     std::uint64_t state = 0;
 };
 
@@ -278,8 +313,9 @@ int main(int argc, char** argv) {
         for (int r = 0; r < options.repeat; ++r) {
             for (std::size_t k = 0; k < counts; ++k) {
                 const std::size_t t = (k + static_cast<std::size_t>(r)) % counts;  // rotate who goes first
-                const Run run = runScene(scenes[s], options.threads[t], row.steps);
                 Cell& cell = row.cells[t];
+                if (options.threads[t] > 1) cell.roundTripNs.push_back(roundTripNs());
+                const Run run = runScene(scenes[s], options.threads[t], row.steps);
                 cell.ms.push_back(run.msPerStep);
                 cell.state = run.finalState;
                 std::cerr << '.' << std::flush;
@@ -298,7 +334,10 @@ int main(int argc, char** argv) {
        << " hardware threads; load average (1, 5, 15 min) " << loadBefore << " before, " << loadAverage()
        << " after. ms per step of the stepping loop (wall time), the median of " << options.repeat
        << " runs, the range of the runs in brackets; the runs of a scene alternate between thread counts. "
-       << "\"same bits\": every thread count ended in the same state, bit for bit.\n\n";
+       << "\"same bits\": every thread count ended in the same state, bit for bit. After the range of a "
+       << "multi-threaded cell, the range of the core-to-core round trip measured before each of its runs "
+       << "(two threads passing a counter): where the host runs the threads on cores that share a cache it "
+       << "is several times shorter, and the workers' hand-overs of bodies and manifolds cost that much less.\n\n";
     md << "| scene | bodies | steps |";
     const int cores = resolvedThreads(0);
     for (int threads : options.threads)
@@ -312,7 +351,12 @@ int main(int argc, char** argv) {
         md << "| " << row.name << " | " << row.bodies << " | " << row.steps << " |";
         for (const Cell& cell : row.cells) {
             const auto [low, high] = std::minmax_element(cell.ms.begin(), cell.ms.end());
-            md << ' ' << msText(median(cell.ms)) << " (" << msText(*low) << "–" << msText(*high) << ") |";
+            md << ' ' << msText(median(cell.ms)) << " (" << msText(*low) << "–" << msText(*high) << ")";
+            if (!cell.roundTripNs.empty()) {
+                const auto [fastest, slowest] = std::minmax_element(cell.roundTripNs.begin(), cell.roundTripNs.end());
+                md << "; " << fixed(*fastest, 0) << "–" << fixed(*slowest, 0) << " ns";
+            }
+            md << " |";
         }
         const double base = median(row.cells.front().ms);
         for (std::size_t t = 1; t < row.cells.size(); ++t) md << ' ' << fixed(base / median(row.cells[t].ms), 2) << "× |";
