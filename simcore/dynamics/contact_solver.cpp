@@ -186,7 +186,7 @@ void ContactSolver::prepare(const ContactManager& contactManager, const BodyStor
     // Each batch is filled from its own lanes' contacts, then gets its effective masses: in
     // parallel. Every solver body exists by now, so solverBody only looks them up.
     batchPenetration_.assign(batches_.size(), 0.0f);
-    pool.parallelFor(batches_.size(), kBatchGrain, [&](std::size_t, std::size_t beginBatch, std::size_t endBatch) {
+    forEachColorSlice([&](std::size_t beginBatch, std::size_t endBatch) {
     for (std::size_t k = beginBatch; k < endBatch; ++k) {
         // Every lane writes back to its batch's scratch row (after the solver bodies' rows) unless
         // it has a moving body, set below.
@@ -358,12 +358,12 @@ void ContactSolver::computeEffectiveMasses(ManifoldBatch& c) {
 }
 
 void ContactSolver::loadVelocities(const BodyStorage& bodies) {
-    for (std::size_t s = 1; s < references_.size(); ++s) {
+    forEachSolverBody([&](std::size_t s) {
         const std::uint32_t i = references_[s].denseIndex;
         const Vec3& v = bodies.linearVelocity[i];
         const Vec3& w = bodies.angularVelocity[i];
         velocities_[s] = {{v.x, v.y, v.z, 0.0f, w.x, w.y, w.z, 0.0f}};
-    }
+    });
 }
 
 void ContactSolver::followPositions(const BodyStorage& bodies) {
@@ -372,22 +372,22 @@ void ContactSolver::followPositions(const BodyStorage& bodies) {
 }
 
 void ContactSolver::loadMotion(const BodyStorage& bodies) {
-    for (std::size_t s = 1; s < references_.size(); ++s) {
+    forEachSolverBody([&](std::size_t s) {
         const BodyReference& ref = references_[s];
         const Vec3 d = bodies.centerOfMass[ref.denseIndex] - ref.centerOfMass;
         const Quat q = bodies.orientation[ref.denseIndex] * glm::conjugate(ref.orientation);
         motion_[s] = {{d.x, d.y, d.z, 0.0f, q.x, q.y, q.z, q.w}};
-    }
+    });
 }
 
 void ContactSolver::storeVelocities(BodyStorage& bodies) const {
-    for (std::size_t s = 1; s < references_.size(); ++s) {
+    forEachSolverBody([&](std::size_t s) {
         const BodyReference& ref = references_[s];
-        if (!ref.moves) continue;
+        if (!ref.moves) return;
         const float* row = velocities_[s].value;
         bodies.linearVelocity[ref.denseIndex] = Vec3(row[0], row[1], row[2]);
         bodies.angularVelocity[ref.denseIndex] = Vec3(row[4], row[5], row[6]);
-    }
+    });
 }
 
 void ContactSolver::warmStart(BodyStorage& bodies) {
@@ -603,7 +603,7 @@ bool ContactSolver::solvePass(bool useBias, PassScope scope) {
 
 // Each lane writes its own manifold's record: batches may run side by side in any order.
 void ContactSolver::storeImpulses(ContactManager& contactManager) const {
-    pool_->parallelFor(batches_.size(), kBatchGrain, [&](std::size_t, std::size_t beginBatch, std::size_t endBatch) {
+    forEachColorSlice([&](std::size_t beginBatch, std::size_t endBatch) {
     for (std::size_t k = beginBatch; k < endBatch; ++k) {
         const ManifoldBatch& c = batches_[k];
         if (k + 1 < endBatch)
