@@ -166,7 +166,11 @@ Run runScene(simcore::Scene scene, int threads, int steps) {
     return {ms / steps, test_support::stateHash(built.world)};
 }
 
-double median(std::vector<double> values);
+double median(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    const std::size_t n = values.size();
+    return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
 
 // ns for a cache line to go from one thread to another and back: two threads pass a counter back
 // and forth, the median of several batches of round trips. On the project's 2-core VM the host
@@ -197,12 +201,6 @@ double roundTripNs() {
     }
     partner.join();
     return median(batches);
-}
-
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    const std::size_t n = values.size();
-    return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
 // A field of /proc/self/status in kB (VmHWM: peak resident set), or -1 where there is none.
