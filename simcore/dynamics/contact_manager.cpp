@@ -387,7 +387,7 @@ void ContactManager::updateManifolds(const BodyStorage& bodies, const BroadPhase
 void ContactManager::takeManifold(Contact& contact) {
     if (freeManifolds_.empty()) {
         contact.manifoldIndex = static_cast<std::uint32_t>(manifolds_.size());
-        manifolds_.emplace_back();
+        manifolds_.push_back({});  // the allocator would leave a bare emplace_back() unwritten
         return;
     }
     contact.manifoldIndex = freeManifolds_.back();

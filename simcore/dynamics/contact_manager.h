@@ -16,6 +16,7 @@
 #include "simcore/collision/contact_manifold.h"
 #include "simcore/collision/pair_table.h"
 #include "simcore/dynamics/body_storage.h"
+#include "simcore/parallel/large_array_allocator.h"
 #include "simcore/parallel/task_pool.h"
 
 #include <array>
@@ -168,7 +169,7 @@ private:
     std::vector<SubShapeBodyPair> subShapeBodyPairs_;
     PairTable pairToSubShapeBodyPair_;
     std::vector<std::uint32_t> contactsOfSlot_;  // by body slot: contacts with other dynamic bodies
-    std::vector<ManifoldRecord> manifolds_;            // the pool: records in use and free ones
+    std::vector<ManifoldRecord, LargeArrayAllocator<ManifoldRecord>> manifolds_;  // the pool: records in use and free ones
     std::vector<std::uint32_t> freeManifolds_;         // indices into manifolds_ not in use, taken last in first out
     std::vector<PairChange> changes_;                  // scratch, by contact: what the narrow phase found
     std::vector<std::uint32_t> gainingPoints_;         // scratch: contacts that gained points this step, in order

@@ -37,6 +37,7 @@
 #include "simcore/dynamics/joint_storage.h"
 #include "simcore/dynamics/constraint_math.h"
 #include "simcore/math/simd.h"
+#include "simcore/parallel/large_array_allocator.h"
 #include "simcore/parallel/task_pool.h"
 #include "simcore/world_settings.h"
 
@@ -266,7 +267,7 @@ private:
     template <class SolveBatch>
     bool forEachBatch(SolveBatch&& solveBatch, bool stiffOnly = false);
 
-    std::vector<ManifoldBatch> batches_;       // colour by colour
+    std::vector<ManifoldBatch, LargeArrayAllocator<ManifoldBatch>> batches_;  // colour by colour
     std::array<std::uint32_t, kColorCount + 2> colorFirstBatch_{};  // colour c: [first[c], first[c + 1])
     // Colour c's batches holding a stiffened manifold: [first[c], stiffEnd[c]).
     std::array<std::uint32_t, kColorCount + 1> colorStiffEnd_{};
