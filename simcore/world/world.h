@@ -124,7 +124,7 @@ private:
     static std::size_t index(Stage stage) { return static_cast<std::size_t>(stage); }
     bool stepUsesWorkers() const { return pool().threadCount() > 1 && stepTuner_.useWorkers(0); }
     void forgetTimings() {
-        stepTuner_ = {};
+        stepTuner_ = StepTuner(kStepFirstWay);
         stageTuner_ = StageTuner(kStagesFirstWay);
     }
     std::optional<int> threads_;                 // settings.threads (0: one per core)
@@ -135,7 +135,11 @@ private:
     // and the probes after it, so to the step tuner the workers looked no faster than inline, and
     // pyramid20 ran its first 28 to 60 steps on one thread (2026-12-06).
     static constexpr StageTuner::FirstWay kStagesFirstWay = StageTuner::FirstWay::Workers;
-    WorkerTuner<1> stepTuner_;                   // the step as a whole, inline first
+    // The step learns workers first too: a world's first step makes every pair and manifold
+    // (pyramid20: 80 ms, then 12), and its narrow phase and batches then fill on every core.
+    using StepTuner = WorkerTuner<1>;
+    static constexpr StepTuner::FirstWay kStepFirstWay = StepTuner::FirstWay::Workers;
+    StepTuner stepTuner_{kStepFirstWay};         // the step as a whole
     StageTuner stageTuner_{kStagesFirstWay};     // each stage, learnt in the steps that use workers
 };
 
