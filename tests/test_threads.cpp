@@ -104,6 +104,7 @@ private slots:
     void tunerTriesBothWaysThenRunsTheFaster_data();
     void tunerTriesBothWaysThenRunsTheFaster();
     void tunerProbesLessOftenWhileItsChoiceHolds();
+    void tunerChargesTheStepAfterAProbeToTheProbe();
     void tunerSwitchesWhenTheOtherWayGetsFaster();
     void worldThreadsFallBackWhenStageChoicesAddUpToASlowerStep();
     void worldThreadsUseWorkersSoonWhenEveryStageGains();
@@ -324,6 +325,34 @@ void TestThreads::tunerProbesLessOftenWhileItsChoiceHolds() {
     const std::vector<int> tinyProbes = stepsWith(tinyWays, true);
     QCOMPARE(tinyProbes.size(), std::size_t{2});  // the learning step and one probe
     QCOMPARE(tinyProbes[1], 2 + Tuner::kMinProbeInterval + 1);
+}
+
+void TestThreads::tunerChargesTheStepAfterAProbeToTheProbe() {
+    using Tuner = WorkerTuner<1>;
+    // Inline runs 1 ms a step, a probe with workers 3 ms, and the step after a probe 3 ms too, as
+    // it moves the data back: each probe costs 4 ms over the chosen way, not 2.
+    Tuner tuner;
+    bool lastWithWorkers = false;
+    double spentMs = 0.0;
+    int counted = 0;
+    // Before the probes reach kMaxProbeInterval apart, where their cost, not their interval, sets
+    // how often they come.
+    for (int step = 0; step < 1000; ++step) {
+        const bool withWorkers = tuner.useWorkers(0);
+        const double ms = withWorkers || lastWithWorkers ? 3.0 : 1.0;
+        tuner.record(0, ms);
+        lastWithWorkers = withWorkers;
+        if (step >= 4) {  // past the first step and the learning of both ways
+            spentMs += ms;
+            ++counted;
+        }
+    }
+    // Probes and the steps after them take at most kProbeCostShare of the chosen way's time, and
+    // one probe's cost at the end (here 20 ms over 996; charged only its own step, each probe came
+    // twice as often: 28 ms).
+    const double chosenMs = counted * 1.0;
+    QVERIFY2(spentMs - chosenMs <= Tuner::kProbeCostShare * chosenMs + 4.0,
+             qPrintable(QString("%1 ms over %2").arg(spentMs - chosenMs).arg(chosenMs)));
 }
 
 void TestThreads::tunerSwitchesWhenTheOtherWayGetsFaster() {
