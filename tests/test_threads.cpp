@@ -9,6 +9,7 @@
 #include "support/state_hash.h"
 
 #include "simcore/io/scene_io.h"
+#include "simcore/parallel/large_array_allocator.h"
 #include "simcore/parallel/task_pool.h"
 #include "simcore/parallel/worker_tuner.h"
 #include "simcore/world/world.h"
@@ -101,6 +102,7 @@ private slots:
     void poolPhasesRunInOrder();
     void poolWakesSleepingWorkers();
     void poolWithWorkersOffRunsOnTheCallerInOrder();
+    void largeArraysKeepTheirElementsOnHugePageBoundaries();
     void tunerTriesBothWaysThenRunsTheFaster_data();
     void tunerTriesBothWaysThenRunsTheFaster();
     void tunerProbesLessOftenWhileItsChoiceHolds();
@@ -268,6 +270,30 @@ std::vector<int> stepsWith(const std::vector<bool>& ways, bool withWorkers) {
 }
 
 }  // namespace
+
+void TestThreads::largeArraysKeepTheirElementsOnHugePageBoundaries() {
+    using Allocator = simcore::LargeArrayAllocator<std::uint64_t>;
+    constexpr std::size_t kHugeCount = Allocator::kHugePageBytes / sizeof(std::uint64_t);
+    // Grown one element at a time past the huge-page size (reallocating on the way): every element
+    // written is kept, and the array then starts on a huge-page boundary.
+    std::vector<std::uint64_t, Allocator> values;
+    for (std::uint64_t k = 0; k < kHugeCount + 1000; ++k) values.push_back(k * k);
+    QCOMPARE(reinterpret_cast<std::uintptr_t>(values.data()) % Allocator::kHugePageBytes, std::uintptr_t{0});
+    for (std::size_t k = 0; k < values.size(); ++k)
+        if (values[k] != k * k) QFAIL(qPrintable(QString("element %1 lost").arg(k)));
+    // Copies and resizes keep the elements too; a small array is an ordinary allocation.
+    const std::vector<std::uint64_t, Allocator> copy = values;
+    QVERIFY(std::equal(copy.begin(), copy.end(), values.begin(), values.end()));
+    values.resize(16);
+    values.shrink_to_fit();
+    QCOMPARE(values.size(), std::size_t{16});
+    QCOMPARE(values[15], std::uint64_t{225});
+    // What a resize adds is left for its filler to write; written, it reads back.
+    values.resize(kHugeCount);
+    for (std::size_t k = 16; k < values.size(); ++k) values[k] = k;
+    QCOMPARE(values.back(), std::uint64_t{kHugeCount - 1});
+    QCOMPARE(values[15], std::uint64_t{225});
+}
 
 void TestThreads::tunerTriesBothWaysThenRunsTheFaster_data() {
     QTest::addColumn<double>("inlineMs");
