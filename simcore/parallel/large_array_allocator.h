@@ -1,14 +1,13 @@
 #pragma once
 // The allocator of a step's large arrays (the solver's batches, the contact records). Two things
-// make a world's first step of a large scene cheaper (pyramid20, 2-core VM: about 80 ms, most of
-// it page faults, against 12 ms for a later step):
+// make a world's first step of a large scene cheaper (pyramid20 on this project's 2-core VM:
+// 105-140 ms, most of it page faults, against 12 for a later step; 45-70 ms with both):
 // - Growing the vector leaves new elements default-initialised (for trivial types: unwritten), so
 //   the threads that fill them in parallel write, and fault in, their pages first; the caller no
 //   longer zeroes megabytes one page after another before that.
 // - Arrays of kHugePageBytes or more start on such a boundary and are offered to the kernel for
-//   transparent huge pages: one fault each 2 MiB, not each 4 KiB (pyramid20's first step 40%
-//   shorter). In Linux's "madvise" THP mode (Debian's) only advised memory gets them; where THP is
-//   off the advice changes nothing.
+//   transparent huge pages: one fault each 2 MiB, not each 4 KiB. In Linux's "madvise" THP mode
+//   (Debian's) only advised memory gets them; where THP is off the advice changes nothing.
 
 #include <cstddef>
 #include <cstdlib>

@@ -50,8 +50,9 @@ public:
     }
 
     // The stage's time in a step that ran it as useWorkers said. The first is not learnt from: a
-    // world's first step makes every pair and manifold (pyramid20: 80 ms, then 12), and measured
-    // as the inline way it made the workers look faster for a tower of 40 that steps faster inline.
+    // world's first step makes every pair and manifold (pyramid20: 45-70 ms, then about 12), and
+    // measured as the inline way it made the workers look faster for a tower of 40 that steps
+    // faster inline.
     void record(std::size_t stage, double ms) {
         StageState& state = states_[stage];
         if (!state.warmedUp) {

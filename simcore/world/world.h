@@ -136,7 +136,8 @@ private:
     // pyramid20 ran its first 28 to 60 steps on one thread (2026-12-06).
     static constexpr StageTuner::FirstWay kStagesFirstWay = StageTuner::FirstWay::Workers;
     // The step learns workers first too: a world's first step makes every pair and manifold
-    // (pyramid20: 80 ms, then 12), and its narrow phase and batches then fill on every core.
+    // (pyramid20: 45-70 ms, then about 12), and its narrow phase and batches then fill on every
+    // core.
     using StepTuner = WorkerTuner<1>;
     static constexpr StepTuner::FirstWay kStepFirstWay = StepTuner::FirstWay::Workers;
     StepTuner stepTuner_{kStepFirstWay};         // the step as a whole
