@@ -14,7 +14,6 @@
 #include <memory>
 #include <new>
 #include <type_traits>
-#include <utility>
 
 #include <stdlib.h>  // posix_memalign
 #include <sys/mman.h>
@@ -50,14 +49,11 @@ public:
             std::allocator<T>::deallocate(p, n);
     }
 
-    // Default-initialises where a vector would value-initialise (resize(n), emplace_back()).
+    // Default-initialises where a vector would value-initialise (resize(n), emplace_back()); with
+    // arguments, std::allocator_traits constructs as usual.
     template <class U>
     void construct(U* p) noexcept(std::is_nothrow_default_constructible_v<U>) {
         ::new (static_cast<void*>(p)) U;
-    }
-    template <class U, class... Args>
-    void construct(U* p, Args&&... args) {
-        ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
     }
 
 private:

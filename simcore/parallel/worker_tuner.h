@@ -61,20 +61,18 @@ public:
         }
         const bool probing = state.measuredBothWays() && state.probeDue();
         const int way = useWorkers(stage) ? kWorkers : kInline;
+        double& estimate = state.estimateMs[way];
         if (state.afterLostProbe) {
             // The step after a probe moves the data back to where the chosen way keeps it: what it
             // took beyond the estimate is the probe's cost too (pyramid20 at 2 threads, probing
             // inline: 21 ms, then 17 against 8), and not the chosen way's.
             state.afterLostProbe = false;
-            const double excess = std::max(0.0, ms - state.estimateMs[way]);
-            state.msToProbe += excess / kProbeCostShare - ms;
-            if (state.stepsToProbe > 0) --state.stepsToProbe;
-            return;
+            state.msToProbe += std::max(0.0, ms - estimate) / kProbeCostShare;
+        } else {
+            // A probe's time replaces the last one: averaged in, the first step's (which makes every
+            // pair) outweighed the probes for hundreds of steps.
+            estimate = estimate < 0.0 || probing ? ms : estimate + kAveraging * (ms - estimate);
         }
-        double& estimate = state.estimateMs[way];
-        // A probe's time replaces the last one: averaged in, the first step's (which makes every
-        // pair) outweighed the probes for hundreds of steps.
-        estimate = estimate < 0.0 || probing ? ms : estimate + kAveraging * (ms - estimate);
         if (probing) {
             const int chosen = state.workersChosen ? kWorkers : kInline;
             if (state.estimateMs[way] < kSwitchRatio * state.estimateMs[chosen]) {
