@@ -106,6 +106,7 @@ private slots:
     void tunerTriesBothWaysThenRunsTheFaster_data();
     void tunerTriesBothWaysThenRunsTheFaster();
     void tunerProbesLessOftenWhileItsChoiceHolds();
+    void tunerJudgesAProbeByItsSecondStep();
     void tunerChargesTheStepAfterAProbeToTheProbe();
     void tunerSwitchesWhenTheOtherWayGetsFaster();
     void worldThreadsFallBackWhenStageChoicesAddUpToASlowerStep();
@@ -269,6 +270,22 @@ std::vector<int> stepsWith(const std::vector<bool>& ways, bool withWorkers) {
     return steps;
 }
 
+// The runs of steps one way (a probe, the learning of a way): each run's first step and length.
+struct Run {
+    int first = 0, length = 0;
+};
+std::vector<Run> runsWith(const std::vector<bool>& ways, bool withWorkers) {
+    std::vector<Run> runs;
+    for (std::size_t i = 0; i < ways.size(); ++i) {
+        if (ways[i] != withWorkers) continue;
+        if (i > 0 && ways[i - 1] == withWorkers)
+            ++runs.back().length;
+        else
+            runs.push_back({static_cast<int>(i), 1});
+    }
+    return runs;
+}
+
 }  // namespace
 
 void TestThreads::largeArraysKeepTheirElementsOnHugePageBoundaries() {
@@ -309,54 +326,79 @@ void TestThreads::tunerTriesBothWaysThenRunsTheFaster() {
     QFETCH(bool, workersWin);
     WorkerTuner<1> tuner;
     // The first step (which makes every pair) is ten times the rest: it must not decide, so it is
-    // not learnt from. Then one step each way, and the faster runs.
+    // not learnt from. Two steps each way, learning from the second, and the faster runs.
     const std::vector<bool> ways = tune(
         tuner, 600, [&](int step) { return step == 0 ? 10.0 * inlineMs : inlineMs; },
         [&](int) { return workersMs; });
     QCOMPARE(ways[0], false);
     QCOMPARE(ways[1], false);
     QCOMPARE(ways[2], true);
-    const std::vector<bool> chosen(ways.begin() + 3, ways.begin() + 3 + WorkerTuner<1>::kMinProbeInterval);
+    QCOMPARE(ways[3], true);
+    const std::vector<bool> chosen(ways.begin() + 4, ways.begin() + 4 + WorkerTuner<1>::kMinProbeInterval);
     QCOMPARE(std::count(chosen.begin(), chosen.end(), workersWin), std::ptrdiff_t{WorkerTuner<1>::kMinProbeInterval});
-    // From the first probe on (step 11), the other way runs only in probes, fewer and fewer as they
-    // confirm the choice.
-    const int firstProbe = 3 + WorkerTuner<1>::kMinProbeInterval;
-    const std::vector<int> other = stepsWith(std::vector<bool>(ways.begin() + firstProbe + 1, ways.end()), !workersWin);
-    QVERIFY2(other.size() <= 8, qPrintable(QString::number(other.size())));
-    QVERIFY(other.size() >= 3);  // but it keeps checking
-    QCOMPARE(ways.back(), workersWin);
+    // From then on, the other way runs only in probes of two steps, fewer and fewer as they confirm
+    // the choice.
+    const int learnt = 4;
+    const std::vector<Run> probes = runsWith(std::vector<bool>(ways.begin() + learnt, ways.end()), !workersWin);
+    QVERIFY2(probes.size() <= 8, qPrintable(QString::number(probes.size())));
+    QVERIFY(probes.size() >= 3);  // but it keeps checking
+    for (const Run& probe : probes)
+        if (probe.first + learnt + probe.length < static_cast<int>(ways.size())) QCOMPARE(probe.length, 2);
 }
 
 void TestThreads::tunerProbesLessOftenWhileItsChoiceHolds() {
     using Tuner = WorkerTuner<1>;
     Tuner tuner;
-    // Each probe loses 2 ms against 1 ms steps the chosen way.
+    // Each probe loses 4 ms against 1 ms steps the chosen way: 2 ms in each of its two steps.
     const std::vector<bool> ways = tune(tuner, 2000, [](int) { return 1.0; }, [](int) { return 3.0; });
-    const std::vector<int> probes = stepsWith(ways, true);  // the first is the learning step
+    const std::vector<Run> probes = runsWith(ways, true);  // the first is the learning of workers
     QVERIFY(probes.size() >= 5);
-    const int coveringSteps = static_cast<int>(std::lround(2.0 / Tuner::kProbeCostShare));  // 100
+    const int coveringSteps = static_cast<int>(std::lround(4.0 / Tuner::kProbeCostShare));  // 200
     int interval = Tuner::kMinProbeInterval;
     for (std::size_t p = 1; p < probes.size(); ++p) {
-        // A probe, then `interval` steps the chosen way, and after a probe that lost, as many more
-        // as its loss needs to be kProbeCostShare of their time; then the next probe.
+        // Two probe steps, one moving back, then `interval` steps the chosen way, and after a
+        // probe that lost, as many more as its loss needs to be kProbeCostShare of their time;
+        // then the next probe.
+        QCOMPARE(probes[p].length, 2);
         const int chosenSteps = p == 1 ? interval : std::max(interval, coveringSteps);
-        QCOMPARE(probes[p] - probes[p - 1], chosenSteps + 1);
+        QCOMPARE(probes[p].first - probes[p - 1].first, 2 + 1 + chosenSteps);
         interval = std::min(2 * interval, Tuner::kMaxProbeInterval);
     }
     QCOMPARE(interval, Tuner::kMaxProbeInterval);
-    // A probe that loses 20 ms against 0.01 ms steps waits for 1 s of them (100 000 steps): the
+    // A probe that loses 40 ms against 0.01 ms steps waits for 2 s of them (200 000 steps): the
     // tuner spends at most kProbeCostShare of a tiny step's time on probes.
     Tuner tiny;
     const std::vector<bool> tinyWays = tune(tiny, 30000, [](int) { return 0.01; }, [](int) { return 20.01; });
-    const std::vector<int> tinyProbes = stepsWith(tinyWays, true);
-    QCOMPARE(tinyProbes.size(), std::size_t{2});  // the learning step and one probe
-    QCOMPARE(tinyProbes[1], 2 + Tuner::kMinProbeInterval + 1);
+    const std::vector<Run> tinyProbes = runsWith(tinyWays, true);
+    QCOMPARE(tinyProbes.size(), std::size_t{2});  // the learning of workers and one probe
+    QCOMPARE(tinyProbes[1].first, 2 + 2 + 1 + Tuner::kMinProbeInterval);
+}
+
+void TestThreads::tunerJudgesAProbeByItsSecondStep() {
+    // Workers spread the data over both cores; inline, the first step gathers it onto one and takes
+    // 3 ms, the next ones 1 ms; with workers 1.5 ms. Judged by its first step, an inline probe
+    // would lose and the workers would stay.
+    WorkerTuner<1> tuner(WorkerTuner<1>::FirstWay::Workers);
+    std::vector<bool> ways;
+    bool lastWithWorkers = true;
+    for (int step = 0; step < 300; ++step) {
+        const bool withWorkers = tuner.useWorkers(0);
+        ways.push_back(withWorkers);
+        tuner.record(0, withWorkers ? 1.5 : lastWithWorkers ? 3.0 : 1.0);
+        lastWithWorkers = withWorkers;
+    }
+    // Learnt (two steps each way), then inline but for probes of two steps.
+    QCOMPARE(ways[4], false);
+    const std::vector<Run> probes = runsWith(std::vector<bool>(ways.begin() + 4, ways.end()), true);
+    QVERIFY(!probes.empty());
+    for (const Run& probe : probes) QCOMPARE(probe.length, 2);
+    QCOMPARE(ways.back(), false);
 }
 
 void TestThreads::tunerChargesTheStepAfterAProbeToTheProbe() {
     using Tuner = WorkerTuner<1>;
-    // Inline runs 1 ms a step, a probe with workers 3 ms, and the step after a probe 3 ms too, as
-    // it moves the data back: each probe costs 4 ms over the chosen way, not 2.
+    // Inline runs 1 ms a step, a probe with workers 3 ms in each of its steps, and the step after
+    // a probe 3 ms too, as it moves the data back: each probe costs 6 ms over the chosen way.
     Tuner tuner;
     bool lastWithWorkers = false;
     double spentMs = 0.0;
@@ -368,16 +410,15 @@ void TestThreads::tunerChargesTheStepAfterAProbeToTheProbe() {
         const double ms = withWorkers || lastWithWorkers ? 3.0 : 1.0;
         tuner.record(0, ms);
         lastWithWorkers = withWorkers;
-        if (step >= 4) {  // past the first step and the learning of both ways
+        if (step >= 5) {  // past the learning of both ways and the step back from it
             spentMs += ms;
             ++counted;
         }
     }
     // Probes and the steps after them take at most kProbeCostShare of the chosen way's time, and
-    // one probe's cost at the end (here 20 ms over 996; charged only its own step, each probe came
-    // twice as often: 28 ms).
+    // one probe's cost at the end (here 18 ms over 995, three probes).
     const double chosenMs = counted * 1.0;
-    QVERIFY2(spentMs - chosenMs <= Tuner::kProbeCostShare * chosenMs + 4.0,
+    QVERIFY2(spentMs - chosenMs <= Tuner::kProbeCostShare * chosenMs + 6.0,
              qPrintable(QString("%1 ms over %2").arg(spentMs - chosenMs).arg(chosenMs)));
 }
 

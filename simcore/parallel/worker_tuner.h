@@ -11,7 +11,13 @@
 //
 // How: each stage keeps an estimate of its time per step with and without workers (for the way it
 // runs, an exponential average over its steps; for the other, the latest probe), runs the way that
-// is faster, and now and then tries the other (a probe). A probe that confirms the choice doubles the time to the next one (up
+// is faster, and now and then tries the other (a probe) for two steps. A step that runs a stage the
+// other way than the step before moves the stage's data to the cores that way keeps it on, so it
+// is not that way's time: the first step of a probe and the step after it count only as the probe's
+// cost. (Judged by its first step, an inline probe paid for gathering onto one core what the
+// workers had spread over two: pyramid10 at 2 threads on cores that share no cache stepped at
+// 1.75 ms with workers, 1.9 ms in the probe, and kept the workers; 1 thread took 1.27 ms,
+// 2026-12-06.) A probe that confirms the choice doubles the time to the next one (up
 // to kMaxProbeInterval steps, so a settled choice costs almost nothing to check), and the next
 // probe also waits until the chosen way has run long enough for the probe's loss to be at most
 // kProbeCostShare of that time: on a step of microseconds a probe that wakes the workers costs
@@ -35,8 +41,9 @@ public:
     static constexpr double kAveraging = 0.25;  // weight of a new step's time in the estimate
     static constexpr double kProbeCostShare = 0.02;
 
-    // Which way a stage is learnt first: it runs that way in its first two steps (the first not
-    // learnt from), then the other way once, then the faster.
+    // Which way a stage is learnt first: it runs that way in its first two steps, then the other way
+    // in two, each time learning from the second (a world's first step makes every pair and manifold:
+    // pyramid20 45-70 ms, then about 12), then the faster.
     enum class FirstWay { Inline, Workers };
     WorkerTuner() = default;
     explicit WorkerTuner(FirstWay firstWay) : first_(firstWay == FirstWay::Workers ? kWorkers : kInline) {}
@@ -44,35 +51,30 @@ public:
     // Whether this step runs `stage` with workers.
     bool useWorkers(std::size_t stage) const {
         const StageState& state = states_[stage];
-        if (state.estimateMs[first_] < 0.0) return first_ == kWorkers;  // learning: one step each way first
+        if (state.estimateMs[first_] < 0.0) return first_ == kWorkers;  // learning: two steps each way first
         if (state.estimateMs[1 - first_] < 0.0) return first_ != kWorkers;
         return state.probeDue() ? !state.workersChosen : state.workersChosen;
     }
 
-    // The stage's time in a step that ran it as useWorkers said. The first is not learnt from: a
-    // world's first step makes every pair and manifold (pyramid20: 45-70 ms, then about 12), and
-    // measured as the inline way it made the workers look faster for a tower of 40 that steps
-    // faster inline.
+    // The stage's time in a step that ran it as useWorkers said.
     void record(std::size_t stage, double ms) {
         StageState& state = states_[stage];
-        if (!state.warmedUp) {
-            state.warmedUp = true;
+        const int way = useWorkers(stage) ? kWorkers : kInline;
+        const bool probing = state.measuredBothWays() && state.probeDue();
+        if (way != state.lastWay) {  // the step moved the stage's data: not this way's time
+            state.lastWay = way;
+            if (!state.measuredBothWays()) return;  // learning: the next step is learnt from
+            const double excessMs = std::max(0.0, ms - state.estimateMs[state.workersChosen ? kWorkers : kInline]);
+            if (probing)
+                state.probeMoveMs = excessMs;  // the probe's first step; it goes on
+            else
+                state.msToProbe += excessMs / kProbeCostShare;  // back after a probe that lost
             return;
         }
-        const bool probing = state.measuredBothWays() && state.probeDue();
-        const int way = useWorkers(stage) ? kWorkers : kInline;
         double& estimate = state.estimateMs[way];
-        if (state.afterLostProbe) {
-            // The step after a probe moves the data back to where the chosen way keeps it: what it
-            // took beyond the estimate is the probe's cost too (pyramid20 at 2 threads, probing
-            // inline: 21 ms, then 17 against 8), and not the chosen way's.
-            state.afterLostProbe = false;
-            state.msToProbe += std::max(0.0, ms - estimate) / kProbeCostShare;
-        } else {
-            // A probe's time replaces the last one: averaged in, the first step's (which makes every
-            // pair) outweighed the probes for hundreds of steps.
-            estimate = estimate < 0.0 || probing ? ms : estimate + kAveraging * (ms - estimate);
-        }
+        // A probe's time replaces the last one: averaged in, a step far off the rest (a first step)
+        // outweighed the probes for hundreds of steps.
+        estimate = estimate < 0.0 || probing ? ms : estimate + kAveraging * (ms - estimate);
         if (probing) {
             const int chosen = state.workersChosen ? kWorkers : kInline;
             if (state.estimateMs[way] < kSwitchRatio * state.estimateMs[chosen]) {
@@ -81,8 +83,8 @@ public:
                 state.msToProbe = 0.0;
             } else {
                 state.probeInterval = std::min(2 * state.probeInterval, kMaxProbeInterval);
-                state.msToProbe = std::max(0.0, state.estimateMs[way] - state.estimateMs[chosen]) / kProbeCostShare;
-                state.afterLostProbe = true;
+                const double lossMs = state.probeMoveMs + std::max(0.0, state.estimateMs[way] - state.estimateMs[chosen]);
+                state.msToProbe = lossMs / kProbeCostShare;
             }
             state.stepsToProbe = state.probeInterval;
         } else if (state.measuredBothWays()) {
@@ -99,14 +101,15 @@ public:
 private:
     static constexpr int kInline = 0, kWorkers = 1;
     static constexpr int kNotStarted = -1;
+    static constexpr int kNone = -1;
     struct StageState {
         double estimateMs[2] = {-1.0, -1.0};  // by way; negative: not measured yet
         bool workersChosen = false;
         int probeInterval = kMinProbeInterval;
         int stepsToProbe = kNotStarted;  // steps the choice runs before the next probe
         double msToProbe = 0.0;          // and its time (ms) before it, after a probe that lost
-        bool warmedUp = false;           // a first time was recorded (and not learnt from)
-        bool afterLostProbe = false;     // the last step was a probe that kept the choice
+        double probeMoveMs = 0.0;        // the probe's first step over the chosen way's estimate
+        int lastWay = kNone;             // the way the last step ran
         bool measuredBothWays() const { return estimateMs[kInline] >= 0.0 && estimateMs[kWorkers] >= 0.0; }
         bool probeDue() const { return stepsToProbe == 0 && msToProbe <= 0.0; }
     };
