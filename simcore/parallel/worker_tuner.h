@@ -6,8 +6,9 @@
 // Why: a stage's jobs are a few microseconds each (a colour of the solver), and what a second
 // thread gains on them depends on the machine. On one 2-core machine two threads stepped pyramid20
 // 1.8x faster than one (2026-12-03); on another, whose second core adds little (two independent
-// 1-thread runs each slowed by 1.45x), they stepped pyramid10 at 0.64x the speed (2026-12-04). A fixed rule (a grain, a minimum size) right for one is wrong for
-// the other; a measurement is right for both.
+// 1-thread runs each slowed by 1.45x), they stepped pyramid10 at 0.64x the speed (2026-12-04). A
+// fixed rule (a grain, a minimum size) right for one is wrong for the other; a measurement is
+// right for both.
 //
 // How: each stage keeps an estimate of its time per step with and without workers (for the way it
 // runs, an exponential average over its steps; for the other, the latest probe), runs the way that
