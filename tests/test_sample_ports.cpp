@@ -94,24 +94,9 @@ std::vector<Port> ports() {
     const Check noTunnel{Kind::NoTunnel, 0.0f};
     auto noRebound = [](const char* knownFailure = nullptr) { return Check{Kind::NoRebound, kReboundSpeed, knownFailure}; };
     return {
-        {box3dHighMassRatio1, T,
-         {sideways("HighMassRatio1: a pyramid's cube 0.25 m sideways at 10 s under the heavy top cubes "
-                   "(Box3D 0.41 m), bound 2 cm; issue 12"),
-          height(20.0f)}},
-        {[] { return box2dHighMassRatio(2); }, T,
-         {sideways("HighMassRatio2: the 400:1 box lands and pushes a support 36 cm sideways by 10 s (Box3D 0.53 m), "
-                   "bound 2 cm; 4.3 cm before manifold reuse, but 19-27 cm then too with the supports "
-                   "placed 10 um aside; issue 12"),
-          height(21.0f), noTunnel,
-          noRebound("HighMassRatio2: restitution 0, yet the 400:1 box leaves its supports upward at 0.26 m/s (0.8 m/s before manifold reuse with the supports 10 um aside) "
-                    "(Box3D 4.44 m/s), bound 0.1 m/s; issue 12")}},
-        {[] { return box2dHighMassRatio(3); }, T,
-         {sideways("HighMassRatio3: a prism is pushed 0.45 m sideways by 10 s (Box3D 0.08 m), bound 2 cm; issue 12"),
-          height(21.0f, "HighMassRatio3: the 800:1 box ends 0.15 m off its rest at 10 s (Box3D 0.31 m), "
-                        "bound 5.25 cm; issue 12"),
-          noTunnel,
-          noRebound("HighMassRatio3: restitution 0, yet the 800:1 box leaves the prisms upward at 0.60 m/s "
-                    "(Box3D 1.38 m/s), bound 0.1 m/s; issue 12")}},
+        {box3dHighMassRatio1, T, {sideways(), height(20.0f)}},
+        {[] { return box2dHighMassRatio(2); }, T, {sideways(), height(21.0f), noTunnel, noRebound()}},
+        {[] { return box2dHighMassRatio(3); }, T, {sideways(), height(21.0f), noTunnel, noRebound()}},
         {box3dTinyPyramid, T,
          {{Kind::Sideways, 0.005f,
            "Tiny Pyramid: stands, but a 5 cm cube ends 1.2 cm sideways at 10 s (Box3D 1.9 cm), bound 5 mm (it "
@@ -130,15 +115,7 @@ std::vector<Port> ports() {
          {sideways(),
           height(5.1f, "Wheel Stack: the top wheel ends 4.1 cm below its rest at 10 s, the soft contacts' "
                        "compression under the wheels above each (Box3D 30 cm), bound 2 cm; issue 12")}},
-        {joltHeavyOnLight, T,
-         {sideways("HeavyOnLight: the pairs land and slide apart, a box 8.9 cm sideways at 10 s (Box3D 3.4 m), "
-                   "bound 2 cm; issue 12"),
-          height(20.0f),
-          noTunnel,
-          noRebound("HeavyOnLight: restitution 0, yet a light box moves upward at 0.31 m/s, bound "
-                    "0.1 m/s. How the 17 m/s landing tips the pair depends on micrometres of the light boxes' rest: "
-                    "before manifold reuse it measured 0.056 m/s here but 0.29 m/s with the light boxes placed "
-                    "10 um aside; issue 12")}},
+        {joltHeavyOnLight, T, {sideways(), height(20.0f), noTunnel, noRebound()}},
         {box3dEdgeCrossing, 3.0f,
          {{Kind::Overlap, 0.01f}}},
         {joltHighSpeed, 2.0f,
@@ -423,6 +400,8 @@ private slots:
     void sceneFilesAreThePorts();
     void holdsAtTheDefaults_data();
     void holdsAtTheDefaults();
+    void unevenMassesHoldWithBodiesPlacedAside_data();
+    void unevenMassesHoldWithBodiesPlacedAside();
 };
 
 // The suite's table covers every port of support/worlds.h, in its order.
@@ -481,6 +460,47 @@ void TestSamplePorts::holdsAtTheDefaults() {
     qInfo("%s, %g s (%.1f s to run): %s", sample.name.c_str(), port.seconds, timer.elapsed() / 1000.0, qPrintable(figures.join("; ")));
     for (const Check& c : port.checks) {
         if (c.knownFailure) QEXPECT_FAIL("", c.knownFailure, Continue);
+        QVERIFY2(f.of(c.kind) <= c.bound,
+                 qPrintable(QString("%1: %2, bound %3").arg(kindName(c.kind), describe(c.kind, f)).arg(c.bound)));
+    }
+}
+
+void TestSamplePorts::unevenMassesHoldWithBodiesPlacedAside_data() {
+    QTest::addColumn<int>("index");
+    QTest::addColumn<unsigned>("seed");
+    const std::vector<PortedSample> samples = allPortedSamples();
+    for (std::size_t i = 0; i < samples.size(); ++i) {
+        const std::string& name = samples[i].name;
+        if (name.find("mass_ratio") == std::string::npos && name.find("heavy_on_light") == std::string::npos) continue;
+        for (unsigned seed = 1; seed <= 3; ++seed)
+            QTest::newRow(QString("%1, placement %2").arg(name.c_str()).arg(seed).toUtf8()) << static_cast<int>(i) << seed;
+    }
+}
+
+// Heavy bodies landing on light ones were chaotic: with the light ones placed 10 um aside,
+// HeavyOnLight's rebound went from 0.056 to 0.29 m/s and HighMassRatio2's support from 4.3 to
+// 19-27 cm sideways. Every dynamic body moved by up to 10 um in x and z, the checks still hold.
+void TestSamplePorts::unevenMassesHoldWithBodiesPlacedAside() {
+    QFETCH(int, index);
+    QFETCH(unsigned, seed);
+    const Port port = ports()[static_cast<std::size_t>(index)];
+    PortedSample sample = port.build();
+    std::uint32_t state = seed;
+    const auto aside = [&state] {  // in [-10, 10] um: a linear congruential step's top 24 bits
+        state = state * 1664525u + 1013904223u;
+        return 1e-5f * (static_cast<float>(state >> 8) / 8388608.0f - 1.0f);
+    };
+    for (SceneBody& body : sample.scene.bodies) {
+        if (body.body.motion != MotionType::Dynamic) continue;
+        body.body.position.x += aside();
+        body.body.position.z += aside();
+    }
+    const Figures f = measure(sample, port.seconds);
+    QStringList figures;
+    for (const Check& c : port.checks) figures << QString("%1 %2").arg(kindName(c.kind), describe(c.kind, f));
+    qInfo("%s placed aside (%u): %s", sample.name.c_str(), seed, qPrintable(figures.join("; ")));
+    for (const Check& c : port.checks) {
+        QVERIFY(!c.knownFailure);
         QVERIFY2(f.of(c.kind) <= c.bound,
                  qPrintable(QString("%1: %2, bound %3").arg(kindName(c.kind), describe(c.kind, f)).arg(c.bound)));
     }

@@ -303,11 +303,56 @@ void ContactSolver::prepare(const ContactManager& contactManager, const BodyStor
     velocities_.assign(references_.size() + batches_.size(), BodyRow{});
     changedInPass_.assign(references_.size(), 0);
     unevenBody_.resize(references_.size(), 0);
+    supportDepth_.clear();
+    if (std::find(unevenBody_.begin(), unevenBody_.end(), 1) != unevenBody_.end()) findSupportDepths();
     pass_ = 1;  // no body counts as changed before the first pass
     motion_.assign(references_.size(), BodyRow{});
     motion_[0].value[7] = 1.0f;  // the immovable body's rotation: identity
     loadMotion(bodies);
     motionCount_ = 1;  // the batches' separations (separationMotion 0) are computed in their first pass
+}
+
+// Breadth first from every body that does not move, over the manifolds' lanes.
+void ContactSolver::findSupportDepths() {
+    const std::size_t n = references_.size();
+    supportDepth_.assign(n, kUnsupported);
+    neighbourStart_.assign(n + 1, 0);
+    const auto forEachLane = [this](auto&& visit) {
+        for (const ManifoldBatch& c : batches_)
+            for (int lane = 0; lane < kLanes; ++lane)
+                if (c.pointCount[lane] > 0)
+                    visit(static_cast<std::size_t>(c.bodyA[lane]), c.storeA[lane] == c.bodyA[lane],
+                          static_cast<std::size_t>(c.bodyB[lane]), c.storeB[lane] == c.bodyB[lane]);
+    };
+    // A body's list holds the moving bodies it touches: the ones its depth reaches.
+    forEachLane([&](std::size_t a, bool movesA, std::size_t b, bool movesB) {
+        if (movesB) ++neighbourStart_[a + 1];
+        if (movesA) ++neighbourStart_[b + 1];
+        if (!movesA) supportDepth_[a] = 0;
+        if (!movesB) supportDepth_[b] = 0;
+    });
+    for (std::size_t s = 0; s < n; ++s) neighbourStart_[s + 1] += neighbourStart_[s];
+    neighbours_.resize(neighbourStart_[n]);
+    // Each list filled from its start, which moves the start to the next list's; then moved back.
+    forEachLane([&](std::size_t a, bool movesA, std::size_t b, bool movesB) {
+        if (movesB) neighbours_[neighbourStart_[a]++] = static_cast<std::uint32_t>(b);
+        if (movesA) neighbours_[neighbourStart_[b]++] = static_cast<std::uint32_t>(a);
+    });
+    for (std::size_t s = n; s > 0; --s) neighbourStart_[s] = neighbourStart_[s - 1];
+    neighbourStart_[0] = 0;
+    std::vector<std::uint32_t>& queue = depthQueue_;
+    queue.clear();
+    for (std::size_t s = 0; s < n; ++s)
+        if (supportDepth_[s] == 0) queue.push_back(static_cast<std::uint32_t>(s));
+    for (std::size_t next = 0; next < queue.size(); ++next) {
+        const std::uint32_t body = queue[next];
+        for (std::uint32_t k = neighbourStart_[body]; k < neighbourStart_[body + 1]; ++k) {
+            const std::uint32_t neighbour = neighbours_[k];
+            if (supportDepth_[neighbour] != kUnsupported) continue;
+            supportDepth_[neighbour] = supportDepth_[body] + 1;
+            queue.push_back(neighbour);
+        }
+    }
 }
 
 // A batch's effective masses; zero for the rows of absent points and of frictionless lanes, so those
@@ -430,6 +475,69 @@ bool ContactSolver::relaxWherePushing(BodyStorage& bodies, int passes) {
     for (int i = 0; pushLeft && i < passes; ++i) pushLeft = solvePass(false, PassScope::Pushing);
     storeVelocities(bodies);
     return pushLeft;
+}
+
+void ContactSolver::settleOnSupports(BodyStorage& bodies) {
+    if (supportDepth_.empty()) return;
+    loadVelocities(bodies);
+    const float inverseH = 1.0f / params_.substepDt;
+    const auto jointed = [this](std::size_t s) { return !jointed_.empty() && jointed_[references_[s].denseIndex]; };
+    const auto lanes3 = [](const FloatW (&w)[3], int lane) { return Vec3(w[0].lane(lane), w[1].lane(lane), w[2].lane(lane)); };
+    const auto inertia = [](const FloatW (&w)[6], int lane) {
+        const float xx = w[0].lane(lane), yy = w[1].lane(lane), zz = w[2].lane(lane);
+        const float xy = w[3].lane(lane), xz = w[4].lane(lane), yz = w[5].lane(lane);
+        return Mat3(xx, xy, xz, xy, yy, yz, xz, yz, zz);
+    };
+    for (ManifoldBatch& c : batches_) {
+        for (int lane = 0; lane < kLanes; ++lane) {
+            if (c.pointCount[lane] == 0 || c.restitution.lane(lane) > 0.0f) continue;
+            const auto a = static_cast<std::size_t>(c.bodyA[lane]), b = static_cast<std::size_t>(c.bodyB[lane]);
+            if (!unevenBody_[a] && !unevenBody_[b]) continue;
+            const bool movesA = c.storeA[lane] == c.bodyA[lane], movesB = c.storeB[lane] == c.bodyB[lane];
+            if ((movesA && jointed(a)) || (movesB && jointed(b))) continue;
+            // A body lower than the other (fewer contacts from the ground) holds still.
+            const bool freeA = movesA && supportDepth_[a] >= supportDepth_[b];
+            const bool freeB = movesB && supportDepth_[b] >= supportDepth_[a];
+            if (!freeA && !freeB) continue;
+            const float inverseMassA = freeA ? c.inverseMassA.lane(lane) : 0.0f;
+            const float inverseMassB = freeB ? c.inverseMassB.lane(lane) : 0.0f;
+            const Mat3 inverseInertiaA = freeA ? inertia(c.inverseInertiaA, lane) : Mat3(0.0f);
+            const Mat3 inverseInertiaB = freeB ? inertia(c.inverseInertiaB, lane) : Mat3(0.0f);
+            const Vec3 normal = lanes3(c.normal, lane);
+            float* rowA = velocities_[a].value;
+            float* rowB = velocities_[b].value;
+            Vec3 vA(rowA[0], rowA[1], rowA[2]), wA(rowA[4], rowA[5], rowA[6]);
+            Vec3 vB(rowB[0], rowB[1], rowB[2]), wB(rowB[4], rowB[5], rowB[6]);
+            float impulse[kMaxManifoldPoints];
+            for (int i = 0; i < c.pointCount[lane]; ++i) impulse[i] = c.points[i].normalImpulse.lane(lane);
+            for (int sweep = 0; sweep < kMaxNormalSweeps; ++sweep) {
+                float largestChange = 0.0f;
+                for (int i = 0; i < c.pointCount[lane]; ++i) {
+                    const PointBatch& p = c.points[i];
+                    const Vec3 anchorA = lanes3(p.anchorA, lane), anchorB = lanes3(p.anchorB, lane);
+                    const Vec3 leverA = glm::cross(anchorA, normal), leverB = glm::cross(anchorB, normal);
+                    const float mass = inverseMassA + inverseMassB + glm::dot(leverA, inverseInertiaA * leverA) +
+                                       glm::dot(leverB, inverseInertiaB * leverB);
+                    const float vn = glm::dot(vB + glm::cross(wB, anchorB) - vA - glm::cross(wA, anchorA), normal);
+                    // A speculative point lets the bodies close the gap, as in the relax passes.
+                    const float separation = p.separation.lane(lane);
+                    const float target = separation > 0.0f ? -separation * inverseH : 0.0f;
+                    const float accumulated = std::max(impulse[i] - (vn - target) / mass, 0.0f);
+                    const float delta = accumulated - impulse[i];
+                    impulse[i] = accumulated;
+                    vA -= (inverseMassA * delta) * normal;
+                    wA -= inverseInertiaA * (leverA * delta);
+                    vB += (inverseMassB * delta) * normal;
+                    wB += inverseInertiaB * (leverB * delta);
+                    largestChange = std::max(largestChange, std::abs(delta) * mass);
+                }
+                if (largestChange <= kSweepTolerance) break;
+            }
+            if (freeA) velocities_[a] = {{vA.x, vA.y, vA.z, 0.0f, wA.x, wA.y, wA.z, 0.0f}};
+            if (freeB) velocities_[b] = {{vB.x, vB.y, vB.z, 0.0f, wB.x, wB.y, wB.z, 0.0f}};
+        }
+    }
+    storeVelocities(bodies);
 }
 
 bool ContactSolver::touchesChange(const ManifoldBatch& c) const {

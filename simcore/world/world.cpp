@@ -301,9 +301,10 @@ void World::relaxConstraints(const StepPlan& plan) {
                              if (plan.relaxContacts) pushLeft = contactSolver_.solve(bodies_, false, passes);
                              return true;
                          });
-    if (!pushLeft) return;
-    interleaveWithJoints(plan.solveJoints, jointSolver_, bodies_, false, ContactSolver::kMaxExtraRelaxPasses,
-                         [&](int passes) { return contactSolver_.relaxWherePushing(bodies_, passes); });
+    if (pushLeft)
+        interleaveWithJoints(plan.solveJoints, jointSolver_, bodies_, false, ContactSolver::kMaxExtraRelaxPasses,
+                             [&](int passes) { return contactSolver_.relaxWherePushing(bodies_, passes); });
+    if (plan.relaxContacts) contactSolver_.settleOnSupports(bodies_);
 }
 
 void World::storeImpulses(const StepPlan& plan, StepCounters& counters) {
