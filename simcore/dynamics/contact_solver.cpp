@@ -495,9 +495,11 @@ void ContactSolver::settleOnSupports(BodyStorage& bodies) {
             if (!unevenBody_[a] && !unevenBody_[b]) continue;
             const bool movesA = c.storeA[lane] == c.bodyA[lane], movesB = c.storeB[lane] == c.bodyB[lane];
             if ((movesA && jointed(a)) || (movesB && jointed(b))) continue;
-            // A body lower than the other (fewer contacts from the ground) holds still.
-            const bool freeA = movesA && supportDepth_[a] >= supportDepth_[b];
-            const bool freeB = movesB && supportDepth_[b] >= supportDepth_[a];
+            // The body lower than the other (fewer contacts from the ground) holds still; bodies
+            // side by side, at one depth, have had the ordinary passes' answer.
+            if (supportDepth_[a] == supportDepth_[b]) continue;
+            const bool freeA = movesA && supportDepth_[a] > supportDepth_[b];
+            const bool freeB = movesB && supportDepth_[b] > supportDepth_[a];
             if (!freeA && !freeB) continue;
             const float inverseMassA = freeA ? c.inverseMassA.lane(lane) : 0.0f;
             const float inverseMassB = freeB ? c.inverseMassB.lane(lane) : 0.0f;
