@@ -316,6 +316,13 @@ QString describe(Kind kind, const Figures& f) {
     return {};
 }
 
+// Every check of the port: its figure and bound, for the log.
+QString describeChecks(const Port& port, const Figures& f) {
+    QStringList figures;
+    for (const Check& c : port.checks) figures << QString("%1 %2 (bound %3)").arg(kindName(c.kind), describe(c.kind, f)).arg(c.bound);
+    return figures.join("; ");
+}
+
 // ---- scene files ----
 
 using OrderedJson = nlohmann::ordered_json;
@@ -455,9 +462,8 @@ void TestSamplePorts::holdsAtTheDefaults() {
     QElapsedTimer timer;
     timer.start();
     const Figures f = measure(sample, port.seconds);
-    QStringList figures;
-    for (const Check& c : port.checks) figures << QString("%1 %2 (bound %3)").arg(kindName(c.kind), describe(c.kind, f)).arg(c.bound);
-    qInfo("%s, %g s (%.1f s to run): %s", sample.name.c_str(), port.seconds, timer.elapsed() / 1000.0, qPrintable(figures.join("; ")));
+    qInfo("%s, %g s (%.1f s to run): %s", sample.name.c_str(), port.seconds, timer.elapsed() / 1000.0,
+          qPrintable(describeChecks(port, f)));
     for (const Check& c : port.checks) {
         if (c.knownFailure) QEXPECT_FAIL("", c.knownFailure, Continue);
         QVERIFY2(f.of(c.kind) <= c.bound,
@@ -496,9 +502,7 @@ void TestSamplePorts::unevenMassesHoldWithBodiesPlacedAside() {
         body.body.position.z += aside();
     }
     const Figures f = measure(sample, port.seconds);
-    QStringList figures;
-    for (const Check& c : port.checks) figures << QString("%1 %2").arg(kindName(c.kind), describe(c.kind, f));
-    qInfo("%s placed aside (%u): %s", sample.name.c_str(), seed, qPrintable(figures.join("; ")));
+    qInfo("%s placed aside (%u): %s", sample.name.c_str(), seed, qPrintable(describeChecks(port, f)));
     for (const Check& c : port.checks) {
         QVERIFY(!c.knownFailure);
         QVERIFY2(f.of(c.kind) <= c.bound,

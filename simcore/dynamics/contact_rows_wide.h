@@ -29,6 +29,14 @@ inline void setLanes(FloatW (&wide)[6], int lane, const Mat3& m) {  // symmetric
     wide[5].setLane(lane, m[2][1]);
 }
 
+// One lane of a wide vector or symmetric matrix: what setLanes wrote.
+inline Vec3 laneOf(const FloatW (&wide)[3], int lane) { return {wide[0].lane(lane), wide[1].lane(lane), wide[2].lane(lane)}; }
+inline Mat3 laneOf(const FloatW (&wide)[6], int lane) {
+    const float xx = wide[0].lane(lane), yy = wide[1].lane(lane), zz = wide[2].lane(lane);
+    const float xy = wide[3].lane(lane), xz = wide[4].lane(lane), yz = wide[5].lane(lane);
+    return Mat3(xx, xy, xz, xy, yy, yz, xz, yz, zz);
+}
+
 SIMCORE_SIMD_INLINE Vec3W load(const FloatW (&wide)[3]) { return {wide[0], wide[1], wide[2]}; }
 SIMCORE_SIMD_INLINE SymMat3W load(const FloatW (&wide)[6]) { return {wide[0], wide[1], wide[2], wide[3], wide[4], wide[5]}; }
 SIMCORE_SIMD_INLINE void store(FloatW (&wide)[3], const Vec3W& v) {

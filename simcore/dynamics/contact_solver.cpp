@@ -482,12 +482,6 @@ void ContactSolver::settleOnSupports(BodyStorage& bodies) {
     loadVelocities(bodies);
     const float inverseH = 1.0f / params_.substepDt;
     const auto jointed = [this](std::size_t s) { return !jointed_.empty() && jointed_[references_[s].denseIndex]; };
-    const auto lanes3 = [](const FloatW (&w)[3], int lane) { return Vec3(w[0].lane(lane), w[1].lane(lane), w[2].lane(lane)); };
-    const auto inertia = [](const FloatW (&w)[6], int lane) {
-        const float xx = w[0].lane(lane), yy = w[1].lane(lane), zz = w[2].lane(lane);
-        const float xy = w[3].lane(lane), xz = w[4].lane(lane), yz = w[5].lane(lane);
-        return Mat3(xx, xy, xz, xy, yy, yz, xz, yz, zz);
-    };
     for (ManifoldBatch& c : batches_) {
         for (int lane = 0; lane < kLanes; ++lane) {
             if (c.pointCount[lane] == 0 || c.restitution.lane(lane) > 0.0f) continue;
@@ -496,16 +490,15 @@ void ContactSolver::settleOnSupports(BodyStorage& bodies) {
             const bool movesA = c.storeA[lane] == c.bodyA[lane], movesB = c.storeB[lane] == c.bodyB[lane];
             if ((movesA && jointed(a)) || (movesB && jointed(b))) continue;
             // The body lower than the other (fewer contacts from the ground) holds still; bodies
-            // side by side, at one depth, have had the ordinary passes' answer.
+            // side by side, at one depth, have had the ordinary passes' answer. The upper one moves:
+            // only bodies that do not move are at depth 0.
             if (supportDepth_[a] == supportDepth_[b]) continue;
-            const bool freeA = movesA && supportDepth_[a] > supportDepth_[b];
-            const bool freeB = movesB && supportDepth_[b] > supportDepth_[a];
-            if (!freeA && !freeB) continue;
+            const bool freeA = supportDepth_[a] > supportDepth_[b], freeB = !freeA;
             const float inverseMassA = freeA ? c.inverseMassA.lane(lane) : 0.0f;
             const float inverseMassB = freeB ? c.inverseMassB.lane(lane) : 0.0f;
-            const Mat3 inverseInertiaA = freeA ? inertia(c.inverseInertiaA, lane) : Mat3(0.0f);
-            const Mat3 inverseInertiaB = freeB ? inertia(c.inverseInertiaB, lane) : Mat3(0.0f);
-            const Vec3 normal = lanes3(c.normal, lane);
+            const Mat3 inverseInertiaA = freeA ? laneOf(c.inverseInertiaA, lane) : Mat3(0.0f);
+            const Mat3 inverseInertiaB = freeB ? laneOf(c.inverseInertiaB, lane) : Mat3(0.0f);
+            const Vec3 normal = laneOf(c.normal, lane);
             float* rowA = velocities_[a].value;
             float* rowB = velocities_[b].value;
             Vec3 vA(rowA[0], rowA[1], rowA[2]), wA(rowA[4], rowA[5], rowA[6]);
@@ -516,7 +509,7 @@ void ContactSolver::settleOnSupports(BodyStorage& bodies) {
                 float largestChange = 0.0f;
                 for (int i = 0; i < c.pointCount[lane]; ++i) {
                     const PointBatch& p = c.points[i];
-                    const Vec3 anchorA = lanes3(p.anchorA, lane), anchorB = lanes3(p.anchorB, lane);
+                    const Vec3 anchorA = laneOf(p.anchorA, lane), anchorB = laneOf(p.anchorB, lane);
                     const Vec3 leverA = glm::cross(anchorA, normal), leverB = glm::cross(anchorB, normal);
                     const float mass = inverseMassA + inverseMassB + glm::dot(leverA, inverseInertiaA * leverA) +
                                        glm::dot(leverB, inverseInertiaB * leverB);
@@ -724,8 +717,7 @@ void ContactSolver::storeImpulses(ContactManager& contactManager) const {
             if (c.pointCount[lane] == 0) continue;
             Contact& contact = contactManager.contacts()[c.contactIndex[lane]];
             ManifoldRecord& record = contactManager.manifoldOf(contact);
-            const Vec3 tangent1(c.tangent1[0].lane(lane), c.tangent1[1].lane(lane), c.tangent1[2].lane(lane));
-            const Vec3 tangent2(c.tangent2[0].lane(lane), c.tangent2[1].lane(lane), c.tangent2[2].lane(lane));
+            const Vec3 tangent1 = laneOf(c.tangent1, lane), tangent2 = laneOf(c.tangent2, lane);
             contact.normalImpulse = 0.0f;
             for (int i = 0; i < c.pointCount[lane]; ++i) {
                 record.impulses[i] = {c.points[i].normalImpulse.lane(lane)};
@@ -733,8 +725,7 @@ void ContactSolver::storeImpulses(ContactManager& contactManager) const {
             }
             record.frictionImpulse = {c.tangentImpulse1.lane(lane) * tangent1 + c.tangentImpulse2.lane(lane) * tangent2,
                                        c.twistImpulse.lane(lane),
-                                       Vec3(c.rollingImpulse[0].lane(lane), c.rollingImpulse[1].lane(lane),
-                                            c.rollingImpulse[2].lane(lane))};
+                                       laneOf(c.rollingImpulse, lane)};
         }
     }
     });

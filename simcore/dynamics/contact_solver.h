@@ -80,9 +80,8 @@ public:
     // The substep's last pass over the contacts of bodies of uneven mass (kUnevenMassRatio): each
     // moves only the body further from the ground, counted in contacts (supportDepth_), as if the
     // one under it were immovable (bodies at one depth are left as the relax passes left them), and
-    // its impulses are not kept. Gauss-Seidel passes take a heavy
-    // body's push out only about the mass ratio's share at a time, and what was left threw it and
-    // the light bodies under it about: with restitution 0, Box2D's 400:1 box left its supports at
+    // its impulses are not kept. Gauss-Seidel passes take a heavy body's push out only about the
+    // mass ratio's share at a time, and what was left threw it and the light bodies under it about: with restitution 0, Box2D's 400:1 box left its supports at
     // 0.26 m/s and pushed one 36 cm sideways, and the figures moved from 0.26 to 0.8 m/s and 4 to
     // 27 cm with the supports placed 10 um aside; with this pass, 0.03 m/s and 5-8 mm at any of
     // those placements. Kept, its impulses warm-started the next substep pressing the light bodies
