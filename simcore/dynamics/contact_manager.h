@@ -62,6 +62,9 @@ struct ManifoldRecord {
     ContactManifold manifold;             // world frame, as the narrow phase made or moved it this step
     std::array<ContactImpulse, kMaxManifoldPoints> impulses{};
     FrictionImpulse frictionImpulse;
+    // m: how much deeper than its points the manifold's soft spring acts, so that it holds its
+    // load nearly touching (ContactSolver::kGiveOffsetRate).
+    float giveOffset = 0.0f;
     KeptManifold kept;
 };
 

@@ -145,7 +145,7 @@ void ContactSolver::prepare(const ContactManager& contactManager, const BodyStor
             if (movesB) bodyColors_[sb] |= bit;
         }
         float stiffening = 1.0f;
-        if (soft && weightImpulse > 0.0f && (jointed_.empty() || (!jointed_[a] && !jointed_[b]))) {
+        if (soft && weightImpulse > 0.0f && !jointedPair(a, b)) {
             const float movingInverseMass = (movesA ? inverseMassA : 0.0f) + (movesB ? inverseMassB : 0.0f);
             const float weights = contact.normalImpulse * movingInverseMass / weightImpulse;
             stiffening = std::clamp(weights / kStiffLoad, 1.0f, kMaxStiffening);
@@ -227,10 +227,15 @@ void ContactSolver::prepare(const ContactManager& contactManager, const BodyStor
         const Mat3 inverseInertiaB = movesB ? bodies.inverseInertiaWorld[b] : Mat3(0.0f);
         batch.inverseMassA.setLane(lane, inverseMassA);
         batch.inverseMassB.setLane(lane, inverseMassB);
+        const float springHertz = softHertz * std::sqrt(stiffening);
         const SoftConstraint spring =
-            stiffening > 1.0f ? SoftConstraint::make(softHertz * std::sqrt(stiffening), params.solver.contactDampingRatio, h)
-                              : baseSpring;
+            stiffening > 1.0f ? SoftConstraint::make(springHertz, params.solver.contactDampingRatio, h) : baseSpring;
         batch.biasRate.setLane(lane, spring.biasRate);
+        if (soft && !jointedPair(a, b)) {
+            batch.giveOffset.setLane(lane, record.giveOffset);
+            const float omega = 2.0f * kPi * springHertz;
+            batch.givePerImpulse.setLane(lane, 1.0f / (h * omega * omega));
+        }
         batch.massScale.setLane(lane, spring.massScale);
         batch.impulseScale.setLane(lane, spring.impulseScale);
         setLanes(batch.inverseInertiaA, lane, inverseInertiaA);
@@ -598,7 +603,7 @@ bool ContactSolver::solvePass(bool useBias, PassScope scope) {
         }
         for (int i = 0; i < c.maxPointCount; ++i) {
             const PointBatch& p = c.points[i];
-            const FloatW separation = p.separation;
+            const FloatW separation = p.separation - c.giveOffset;
 
             const MaskW speculative = separation > zero;
             const FloatW arrive = separation * correction.inverseH;
@@ -719,10 +724,18 @@ void ContactSolver::storeImpulses(ContactManager& contactManager) const {
             ManifoldRecord& record = contactManager.manifoldOf(contact);
             const Vec3 tangent1 = laneOf(c.tangent1, lane), tangent2 = laneOf(c.tangent2, lane);
             contact.normalImpulse = 0.0f;
-            for (int i = 0; i < c.pointCount[lane]; ++i) {
-                record.impulses[i] = {c.points[i].normalImpulse.lane(lane)};
+            float meanSeparation = 0.0f, give = 0.0f;
+            const int pointCount = c.pointCount[lane];
+            for (int i = 0; i < pointCount; ++i) {
+                const PointBatch& p = c.points[i];
+                record.impulses[i] = {p.normalImpulse.lane(lane)};
                 contact.normalImpulse += record.impulses[i].normal;
+                meanSeparation += p.separation.lane(lane) / static_cast<float>(pointCount);
+                if (const float mass = p.normalMass.lane(lane); mass > 0.0f)
+                    give += p.normalImpulse.lane(lane) * c.givePerImpulse.lane(lane) / (mass * static_cast<float>(pointCount));
             }
+            const float towardsRest = kGiveOffsetRate * params_.timeStep * (meanSeparation + kRestingGive * give);
+            record.giveOffset = std::clamp(c.giveOffset.lane(lane) - towardsRest, 0.0f, kMaxGiveOffset * give);
             record.frictionImpulse = {c.tangentImpulse1.lane(lane) * tangent1 + c.tangentImpulse2.lane(lane) * tangent2,
                                        c.twistImpulse.lane(lane),
                                        laneOf(c.rollingImpulse, lane)};

@@ -250,6 +250,7 @@ void World::prepareConstraints(const StepPlan& plan) {
     if (plan.contacts) {
         ContactSolver::Params params;
         params.substepDt = plan.substepDt;
+        params.timeStep = settings_.timeStep;
         params.friction = settings_.effects[Effect::Friction];
         params.restitution = settings_.effects[Effect::Restitution];
         params.gravity = plan.velocity.gravity;
