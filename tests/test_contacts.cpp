@@ -63,6 +63,7 @@ private slots:
     void boxWithoutRestitutionDoesNotBounce();
     void fastImpactIsMetAtTheSurface_data();
     void fastImpactIsMetAtTheSurface();
+    void spinningCapsuleLandsWithoutDipping();
     void ballReboundsToQuarterHeight();
     void elasticBallReturnsToItsHeight_data();
     void elasticBallReturnsToItsHeight();
@@ -439,6 +440,34 @@ void TestContacts::fastImpactIsMetAtTheSurface() {
     QVERIFY2(deepest < 0.01f, qPrintable(QString("penetrated %1 m").arg(deepest)));
     QVERIFY2(lowest > 0.5f - 0.01f, qPrintable(QString("centre reached %1 m").arg(lowest)));
     QVERIFY2(std::abs(world.position(box).y - 0.5f) < 0.005f, qPrintable(QString("rests at %1 m").arg(world.position(box).y)));
+}
+
+// A capsule (a ragdoll's shin: radius 6 cm, segment 30 cm) dropped tilted at 6 m/s and turning at
+// up to 25 rad/s: its high end swings down by up to 9 cm a step. Forty drops, each at its own tilt
+// and spin; the deepest overlap any reaches stays under 5 mm (the narrow phase's slop). With the
+// low end's point alone, the high end was found 7.9 cm deep (1.3 cm on average over the drops).
+void TestContacts::spinningCapsuleLandsWithoutDipping() {
+    std::mt19937 random(7);
+    std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+    float deepest = 0.0f;
+    for (int drop = 0; drop < 40; ++drop) {
+        World world{WorldSettings{}};
+        addGround(world);
+        BodyCreationSettings shin;
+        shin.shape = Shape::capsule(0.06f, 0.15f);
+        shin.position = Vec3(0.0f, 0.5f + 0.3f * unit(random), 0.0f);
+        shin.orientation = glm::normalize(Quat(1.0f, 0.5f * unit(random), 0.5f * unit(random), 0.5f * unit(random)));
+        shin.linearVelocity = Vec3(0.0f, -6.0f, 0.0f);
+        shin.angularVelocity = Vec3(25.0f * unit(random), 5.0f * unit(random), 25.0f * unit(random));
+        shin.mass = 1.0f;
+        world.createBody(shin);
+        for (int i = 0; i < 120; ++i) {
+            world.step();
+            deepest = std::max(deepest, world.lastStepProfile().maxPenetration);
+        }
+    }
+    qInfo("40 spinning capsules: deepest overlap %.4f m", deepest);
+    QVERIFY2(deepest < 0.005f, qPrintable(QString("a capsule went %1 m into the ground").arg(deepest)));
 }
 
 void TestContacts::ballReboundsToQuarterHeight() {
