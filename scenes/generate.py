@@ -207,7 +207,7 @@ def ground(half=(50, 0.5, 50), friction=0.6, color=None, name="ground"):
 
 
 def body(name, shape, position, mass=None, density=None, orientation=None, friction=None, restitution=None,
-         color=None, linear_velocity=None, angular_velocity=None, motion=None):
+         rolling_resistance=None, color=None, linear_velocity=None, angular_velocity=None, motion=None):
     b = {"name": name}
     if motion is not None:
         b["motion"] = motion
@@ -223,6 +223,8 @@ def body(name, shape, position, mass=None, density=None, orientation=None, frict
         b["friction"] = friction
     if restitution is not None:
         b["restitution"] = restitution
+    if rolling_resistance is not None:
+        b["rollingResistance"] = rolling_resistance
     if color is not None:
         b["color"] = color
     if linear_velocity is not None:
@@ -671,7 +673,10 @@ def ragdoll():
     """A ragdoll-ish figure (box torso, sphere head, capsule limbs, density 1000) dropped from 2 m
     onto three crates, turning as it falls. Ball joints at the neck, shoulders and hips (no cone
     limits: there are none yet); hinges at the elbows and knees, limited to bend one way
-    (0 .. 2.2 rad and 0 .. 2.4 rad from straight). The limbs start straight, arms out."""
+    (0 .. 2.2 rad and 0 .. 2.4 rad from straight). The limbs start straight, arms out. The head
+    is a sphere with rolling resistance 0.1: a head neither rolls nor spins like a ball (without
+    it, the head landed spinning about the vertical at 32 rad/s and went on spinning, as a single
+    contact point brakes no spin)."""
     skin = [0.95, 0.8, 0.65]
     cloth = [0.3, 0.45, 0.7]
     top = 3.0  # torso centre height
@@ -680,7 +685,7 @@ def ragdoll():
     for n, (x, z) in enumerate(((-0.9, 0.1), (0.0, -0.15), (0.9, 0.2))):  # 10 cm apart
         bodies.append(body("crate %d" % (n + 1), box(0.4, 0.4, 0.4), [x, 0.4, z], mass=10, color=[0.8, 0.65, 0.4]))
     bodies.append(body("torso", box(0.2, 0.3, 0.1), [0, top, 0], color=cloth, angular_velocity=[0.6, 0, 1.2]))
-    bodies.append(body("head", sphere(0.12), [0, top + 0.44, 0], color=skin))
+    bodies.append(body("head", sphere(0.12), [0, top + 0.44, 0], rolling_resistance=0.1, color=skin))
     joints = [joint("neck", "ball", "head", [0, top + 0.32, 0], "torso")]
     for side, sx in (("left", -1), ("right", 1)):
         bodies.append(body("%s upper arm" % side, capsule(0.05, 0.1), [sx * 0.37, top + 0.22, 0], orientation=arm,
