@@ -875,15 +875,21 @@ void addTiltedCapsuleEnd(const Polyhedron& poly, const Transform& ta, const Segm
     contacts.add(onCapsule - height * ref.normal, onCapsule, separation, (std::uint32_t(face & 0xFF) << 16) | 2u);
 }
 
+// A capsule (B) over a face of polyhedron A, its GJK/EPA point in `contacts`: both ends lying flat,
+// else the high end's point beside the low end's.
+void addCapsuleOnFace(const Polyhedron& poly, const Transform& ta, const Segment& segment, float radius, float spec,
+                      Contacts& contacts) {
+    if (!addSegmentOnFace(poly, ta, contacts.normal, segment.p0, segment.p1, radius, spec, contacts))
+        addTiltedCapsuleEnd(poly, ta, segment, radius, spec, contacts);
+}
+
 // Box or hull (A) and capsule (B).
 void collidePolyhedronCapsule(const Shape& a, const Transform& ta, const Shape& b, const Transform& tb, float spec,
                               Contacts& contacts) {
     collideGeneric(a, ta, b, tb, spec, contacts);
     const Polyhedron poly(a);
     if (contacts.count == 0 || !poly.valid()) return;
-    const Segment segment = capsuleSegment(b, tb);
-    if (!addSegmentOnFace(poly, ta, contacts.normal, segment.p0, segment.p1, b.radius, spec, contacts))
-        addTiltedCapsuleEnd(poly, ta, segment, b.radius, spec, contacts);
+    addCapsuleOnFace(poly, ta, capsuleSegment(b, tb), b.radius, spec, contacts);
 }
 
 // Cylinder (A) and sphere (B), in closed form in the cylinder's frame: the closest point of the
@@ -997,9 +1003,7 @@ void collideBoxCapsule(const Shape& a, const Transform& ta, const Shape& b, cons
         collideGeneric(a, ta, b, tb, spec, contacts);
     }
     if (contacts.count == 0) return;
-    const Polyhedron poly(a);
-    if (!addSegmentOnFace(poly, ta, contacts.normal, segment.p0, segment.p1, b.radius, spec, contacts))
-        addTiltedCapsuleEnd(poly, ta, segment, b.radius, spec, contacts);
+    addCapsuleOnFace(Polyhedron(a), ta, segment, b.radius, spec, contacts);
 }
 
 // Box or hull (A) and cylinder (B). GJK/EPA finds the normal; a cap resting flat on a face is then

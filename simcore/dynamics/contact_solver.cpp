@@ -486,7 +486,7 @@ void ContactSolver::settleOnSupports(BodyStorage& bodies) {
     if (supportDepth_.empty()) return;
     loadVelocities(bodies);
     const float inverseH = 1.0f / params_.substepDt;
-    const auto jointed = [this](std::size_t s) { return !jointed_.empty() && jointed_[references_[s].denseIndex]; };
+    const auto jointed = [this](std::size_t s) { return jointedBody(references_[s].denseIndex); };
     for (ManifoldBatch& c : batches_) {
         for (int lane = 0; lane < kLanes; ++lane) {
             if (c.pointCount[lane] == 0 || c.restitution.lane(lane) > 0.0f) continue;
@@ -726,13 +726,14 @@ void ContactSolver::storeImpulses(ContactManager& contactManager) const {
             contact.normalImpulse = 0.0f;
             float meanSeparation = 0.0f, give = 0.0f;
             const int pointCount = c.pointCount[lane];
+            const auto points = static_cast<float>(pointCount);
             for (int i = 0; i < pointCount; ++i) {
                 const PointBatch& p = c.points[i];
-                record.impulses[i] = {p.normalImpulse.lane(lane)};
-                contact.normalImpulse += record.impulses[i].normal;
-                meanSeparation += p.separation.lane(lane) / static_cast<float>(pointCount);
-                if (const float mass = p.normalMass.lane(lane); mass > 0.0f)
-                    give += p.normalImpulse.lane(lane) * c.givePerImpulse.lane(lane) / (mass * static_cast<float>(pointCount));
+                const float impulse = p.normalImpulse.lane(lane);
+                record.impulses[i] = {impulse};
+                contact.normalImpulse += impulse;
+                meanSeparation += p.separation.lane(lane) / points;
+                if (const float mass = p.normalMass.lane(lane); mass > 0.0f) give += impulse * c.givePerImpulse.lane(lane) / (mass * points);
             }
             const float towardsRest = kGiveOffsetRate * params_.timeStep * (meanSeparation + kRestingGive * give);
             record.giveOffset = std::clamp(c.giveOffset.lane(lane) - towardsRest, 0.0f, kMaxGiveOffset * give);

@@ -316,7 +316,8 @@ private:
     std::vector<std::uint8_t> colorOf_;        // scratch
     std::vector<float> stiffening_;            // scratch: by entry of order_, the spring's factor (1: none)
     std::vector<std::uint8_t> jointed_;        // scratch: by dense body index, 1 with a joint (empty: none)
-    bool jointedPair(std::size_t a, std::size_t b) const { return !jointed_.empty() && (jointed_[a] || jointed_[b]); }
+    bool jointedBody(std::size_t denseIndex) const { return !jointed_.empty() && jointed_[denseIndex]; }
+    bool jointedPair(std::size_t a, std::size_t b) const { return jointedBody(a) || jointedBody(b); }
     static constexpr std::uint32_t kNoConstraint = ~std::uint32_t{0};
     std::vector<std::uint32_t> laneConstraint_;  // scratch: by batch and lane, an index into order_
     std::vector<float> batchPenetration_;        // scratch: by batch, its points' deepest overlap (m)
