@@ -57,6 +57,18 @@ public:
         return state.probeDue() ? !state.workersChosen : state.workersChosen;
     }
 
+    // Whether useWorkers(stage) is not the settled choice this step: the stage is still learning,
+    // or a probe is due.
+    bool exploring(std::size_t stage) const {
+        const StageState& state = states_[stage];
+        return !state.measuredBothWays() || state.probeDue();
+    }
+    // The way the stage has settled on, or the way it learns first while it has not.
+    bool settledOnWorkers(std::size_t stage) const {
+        const StageState& state = states_[stage];
+        return state.measuredBothWays() ? state.workersChosen : first_ == kWorkers;
+    }
+
     // The stage's time in a step that ran it as useWorkers said.
     void record(std::size_t stage, double ms) {
         StageState& state = states_[stage];

@@ -98,30 +98,43 @@ public:
         return *pool_;
     }
 
-    // Sets on the pool whether `stage` runs with workers this step, and returns it.
+    // Sets on the pool whether `stage` runs with workers this step, and returns it. A step that
+    // learns or probes workers runs each stage the way it has settled on, with workers where it
+    // has not: a stage that learnt or probed in such a step measured the step tuner's probe, and
+    // stages that had learnt inline in one then made every later probe lose (pyramid10 at 2
+    // threads: 3 runs in 8 kept 1.03-1.15 ms a step instead of 0.74-0.84, 2026-12-07).
     bool startStage(Stage stage) const {
-        const bool withWorkers = stepUsesWorkers() && stageTuner_.useWorkers(index(stage));
-        pool().setWorkersEnabled(withWorkers);
-        return withWorkers;
+        if (!stepUsesWorkers()) return setWorkers(false);
+        return setWorkers(stepTuner_.exploring(0) ? stageTuner_.settledOnWorkers(index(stage))
+                                                  : stageTuner_.useWorkers(index(stage)));
     }
     // After a step: what its stages took, as they ran; outside a step the workers are on again.
+    // One level learns from a step at a time: the stages only in steps the step tuner has settled
+    // on workers, the step tuner only from steps whose stages all ran their settled way.
     void learn(const StepProfile& profile) {
         TaskPool& workers = pool();
         if (workers.threadCount() > 1) {
-            const bool stagesChose = stepUsesWorkers();
+            const bool stagesChose = stepUsesWorkers() && !stepTuner_.exploring(0);
+            bool stagesExplored = false;
             double stepMs = 0.0;
             for (std::size_t s = 0; s < kStageCount; ++s) {
                 if (profile.skipped[s] != StageSkip::Ran) continue;
                 stepMs += profile.stageMs[s];
-                if (stagesChose) stageTuner_.record(s, profile.stageMs[s]);
+                if (!stagesChose) continue;
+                stagesExplored = stagesExplored || stageTuner_.exploring(s);
+                stageTuner_.record(s, profile.stageMs[s]);
             }
-            stepTuner_.record(0, stepMs);
+            if (!stagesExplored) stepTuner_.record(0, stepMs);
         }
         workers.setWorkersEnabled(true);
     }
 
 private:
     static std::size_t index(Stage stage) { return static_cast<std::size_t>(stage); }
+    bool setWorkers(bool withWorkers) const {
+        pool().setWorkersEnabled(withWorkers);
+        return withWorkers;
+    }
     bool stepUsesWorkers() const { return pool().threadCount() > 1 && stepTuner_.useWorkers(0); }
     void forgetTimings() {
         stepTuner_ = StepTuner(kStepFirstWay);
@@ -130,10 +143,8 @@ private:
     std::optional<int> threads_;                 // settings.threads (0: one per core)
     mutable std::unique_ptr<TaskPool> pool_;
     using StageTuner = WorkerTuner<kStageCount>;
-    // A stage learns in the steps that use workers, workers first: the step's own learning step
-    // with workers then runs its stages with them. Learnt inline first, they ran inline in that step
-    // and the probes after it, so to the step tuner the workers looked no faster than inline, and
-    // pyramid20 ran its first 28 to 60 steps on one thread (2026-12-06).
+    // Stages learn once the step has settled on workers, workers first: the step's last steps
+    // spread their data over the cores.
     static constexpr StageTuner::FirstWay kStagesFirstWay = StageTuner::FirstWay::Workers;
     // The step learns workers first too: a world's first step makes every pair and manifold
     // (pyramid20: 45-70 ms, then about 12), and its narrow phase and batches then fill on every
