@@ -102,6 +102,7 @@ private slots:
     void poolPhasesRunInOrder();
     void poolWakesSleepingWorkers();
     void poolWithWorkersOffRunsOnTheCallerInOrder();
+    void poolRunsPhasesOfOneChunkOnTheCaller();
     void largeArraysKeepTheirElementsOnHugePageBoundaries();
     void tunerTriesBothWaysThenRunsTheFaster_data();
     void tunerTriesBothWaysThenRunsTheFaster();
@@ -247,6 +248,27 @@ void TestThreads::poolWithWorkersOffRunsOnTheCallerInOrder() {
     QVERIFY(!elsewhere);
     QCOMPARE(chunks.size(), TaskPool::chunkCount(100, 7));
     for (std::size_t k = 0; k < chunks.size(); ++k) QCOMPARE(chunks[k], k);
+}
+
+void TestThreads::poolRunsPhasesOfOneChunkOnTheCaller() {
+    // Nothing can run beside a phase's only chunk, so workers would only wait between the phases
+    // (a tower's solver colours): the whole job stays on the caller, in order, as with workers off.
+    TaskPool pool(2);
+    pool.parallelFor(64, 1, [](std::size_t, std::size_t, std::size_t) {});  // the worker is awake
+    const std::thread::id caller = std::this_thread::get_id();
+    std::vector<std::size_t> phases;  // unguarded: only the caller may write it
+    bool elsewhere = false;
+    const std::uint64_t sum = pool.parallelSumInPhases(
+        20, 4, [](std::size_t phase) { return phase % 5; },
+        [&](std::size_t phase, std::size_t begin, std::size_t end) {
+            elsewhere = elsewhere || std::this_thread::get_id() != caller;
+            phases.push_back(phase);
+            return std::uint64_t{end - begin};
+        });
+    QVERIFY(!elsewhere);
+    QCOMPARE(sum, std::uint64_t{4 * (0 + 1 + 2 + 3 + 4)});
+    QCOMPARE(phases.size(), std::size_t{16});  // the phases of size 0 have no chunk
+    QVERIFY(std::is_sorted(phases.begin(), phases.end()));
 }
 
 namespace {

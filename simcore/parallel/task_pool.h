@@ -78,18 +78,22 @@ public:
     template <class Size, class Count>
     std::uint64_t parallelSumInPhases(std::size_t phases, std::size_t grain, Size&& phaseSize, Count&& countChunk) {
         if (phaseSize_.size() < phases) growPhases(phases);  // only when the work grew
-        std::size_t chunks = 0;
+        std::size_t chunks = 0, widestPhase = 0;
         for (std::size_t q = 0; q < phases; ++q) {
             phaseSize_[q] = phaseSize(q);
             phaseFirstChunk_[q] = chunks;
-            chunks += chunkCount(phaseSize_[q], grain);
+            const std::size_t phaseChunks = chunkCount(phaseSize_[q], grain);
+            widestPhase = std::max(widestPhase, phaseChunks);
+            chunks += phaseChunks;
         }
         phaseFirstChunk_[phases] = chunks;
         if (chunkSums_.size() < chunks) chunkSums_.resize(chunks);  // only when the work grew
         auto body = [&](std::size_t phase, std::size_t chunk, std::size_t begin, std::size_t end) {
             chunkSums_[phaseFirstChunk_[phase] + chunk] = countChunk(phase, begin, end);
         };
-        if (workers_.empty() || !workersEnabled_ || chunks <= 1) {
+        // Phases of one chunk each leave the workers nothing to run beside the caller, only the
+        // waits between phases (tower20 solves two colours of ten manifolds, one chunk each).
+        if (workers_.empty() || !workersEnabled_ || widestPhase <= 1) {
             for (std::size_t q = 0; q < phases; ++q)
                 for (std::size_t k = 0, n = phaseFirstChunk_[q + 1] - phaseFirstChunk_[q]; k < n; ++k)
                     body(q, k, k * grain, std::min(phaseSize_[q], (k + 1) * grain));
