@@ -20,14 +20,15 @@
 // 1.75 ms with workers, 1.9 ms in the probe, and kept the workers; 1 thread took 1.27 ms,
 // 2026-12-06.) A probe that confirms the choice doubles the time to the next one (up
 // to kMaxProbeInterval steps, so a settled choice costs almost nothing to check), and the next
-// probe also waits until the chosen way has run long enough for the probe's loss to be at most
-// kProbeCostShare of that time: on a step of microseconds a probe that wakes the workers costs
+// probe also waits until the chosen way has run long enough for the probe's loss (or the
+// learning's, before the first probe) to be at most kProbeCostShare of that time: on a step of microseconds a probe that wakes the workers costs
 // several steps (a tower of 40 stepped 0.92x as fast on 2 threads as on 1, 2026-12-06). A probe
 // that wins switches and starts probing often again, as a scene that grows or falls asleep can
 // change the answer.
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 
 namespace simcore {
@@ -57,17 +58,10 @@ public:
         return state.probeDue() ? !state.workersChosen : state.workersChosen;
     }
 
-    // Whether useWorkers(stage) is not the settled choice this step: the stage is still learning,
-    // or a probe is due.
-    bool exploring(std::size_t stage) const {
-        const StageState& state = states_[stage];
-        return !state.measuredBothWays() || state.probeDue();
-    }
-    // The way the stage has settled on, or the way it learns first while it has not.
-    bool settledOnWorkers(std::size_t stage) const {
-        const StageState& state = states_[stage];
-        return state.measuredBothWays() ? state.workersChosen : first_ == kWorkers;
-    }
+    // Whether the stage has yet to measure both ways once.
+    bool learning(std::size_t stage) const { return !states_[stage].measuredBothWays(); }
+    // Whether useWorkers(stage) is not the settled choice this step: learning, or a probe.
+    bool exploring(std::size_t stage) const { return learning(stage) || states_[stage].probeDue(); }
 
     // The stage's time in a step that ran it as useWorkers said.
     void record(std::size_t stage, double ms) {
@@ -104,6 +98,10 @@ public:
             if (state.stepsToProbe == kNotStarted) {  // both ways measured once: the faster to start
                 state.workersChosen = state.estimateMs[kWorkers] < state.estimateMs[kInline];
                 state.stepsToProbe = state.probeInterval;
+                // The first probe waits as after one that lost what the slower way's two steps did:
+                // pyramid20 at 2 threads lost 10 ms in a probe 8 steps after learning, 8% of the
+                // benchmark's 120 steps.
+                state.msToProbe = 2.0 * std::abs(state.estimateMs[kWorkers] - state.estimateMs[kInline]) / kProbeCostShare;
             } else {
                 if (state.stepsToProbe > 0) --state.stepsToProbe;
                 state.msToProbe -= ms;

@@ -99,32 +99,28 @@ public:
     }
 
     // Sets on the pool whether `stage` runs with workers this step, and returns it. A step that
-    // learns or probes workers runs each stage the way it has settled on, with workers where it
-    // has not: a stage that learnt or probed in such a step measured the step tuner's probe, and
-    // stages that had learnt inline in one then made every later probe lose (pyramid10 at 2
-    // threads: 3 runs in 8 kept 1.03-1.15 ms a step instead of 0.74-0.84, 2026-12-07).
+    // learns or probes workers runs every stage with them.
     bool startStage(Stage stage) const {
         if (!stepUsesWorkers()) return setWorkers(false);
-        return setWorkers(stepTuner_.exploring(0) ? stageTuner_.settledOnWorkers(index(stage))
-                                                  : stageTuner_.useWorkers(index(stage)));
+        return setWorkers(stepTuner_.exploring(0) || stageTuner_.useWorkers(index(stage)));
     }
     // After a step: what its stages took, as they ran; outside a step the workers are on again.
-    // One level learns from a step at a time: the stages only in steps the step tuner has settled
-    // on workers, the step tuner only from steps whose stages all ran their settled way.
+    // The stages learn both ways in the steps in which the step does (every stage with workers,
+    // then inline), and after that only in steps settled on workers: a stage that learnt in a probe
+    // of the step tuner's measured that probe, and stages that had learnt inline in one made every
+    // later probe lose (pyramid10 at 2 threads: 3 runs in 8 kept 1.03-1.15 ms a step instead of
+    // 0.74-0.84, 2026-12-07).
     void learn(const StepProfile& profile) {
         TaskPool& workers = pool();
         if (workers.threadCount() > 1) {
-            const bool stagesChose = stepUsesWorkers() && !stepTuner_.exploring(0);
-            bool stagesExplored = false;
+            const bool stagesLearn = stepTuner_.learning(0) || (stepUsesWorkers() && !stepTuner_.exploring(0));
             double stepMs = 0.0;
             for (std::size_t s = 0; s < kStageCount; ++s) {
                 if (profile.skipped[s] != StageSkip::Ran) continue;
                 stepMs += profile.stageMs[s];
-                if (!stagesChose) continue;
-                stagesExplored = stagesExplored || stageTuner_.exploring(s);
-                stageTuner_.record(s, profile.stageMs[s]);
+                if (stagesLearn) stageTuner_.record(s, profile.stageMs[s]);
             }
-            if (!stagesExplored) stepTuner_.record(0, stepMs);
+            stepTuner_.record(0, stepMs);
         }
         workers.setWorkersEnabled(true);
     }
@@ -143,8 +139,7 @@ private:
     std::optional<int> threads_;                 // settings.threads (0: one per core)
     mutable std::unique_ptr<TaskPool> pool_;
     using StageTuner = WorkerTuner<kStageCount>;
-    // Stages learn once the step has settled on workers, workers first: the step's last steps
-    // spread their data over the cores.
+    // Stages learn in the step's own learning steps, in the same order.
     static constexpr StageTuner::FirstWay kStagesFirstWay = StageTuner::FirstWay::Workers;
     // The step learns workers first too: a world's first step makes every pair and manifold
     // (pyramid20: 45-70 ms, then about 12), and its narrow phase and batches then fill on every
