@@ -18,6 +18,7 @@
 // on the set of pairs, never on the tree's shape, so steps are reproducible.
 
 #include "simcore/collision/dynamic_aabb_tree.h"
+#include "simcore/parallel/task_pool.h"
 
 #include <compare>
 #include <cstdint>
@@ -47,8 +48,11 @@ public:
     void touchProxy(ProxyId id);
 
     // Overlapping pairs with at least one side moved since the last call; `pairs` is cleared first
-    // and keeps its capacity, so a caller that reuses it allocates nothing in steady state.
-    void updatePairs(std::vector<BodyPair>& pairs);
+    // and keeps its capacity, so a caller that reuses it allocates nothing in steady state. The
+    // moved proxies' queries only read the tree, so they run on the pool; the pairs are the same
+    // for any thread count.
+    void updatePairs(std::vector<BodyPair>& pairs, TaskPool& pool);
+    void updatePairs(std::vector<BodyPair>& pairs);  // on the calling thread alone
     // Every overlapping pair; leaves the moved set alone.
     void findAllPairs(std::vector<BodyPair>& pairs) const;
 
@@ -69,10 +73,15 @@ private:
         kBuffered = 8,  // listed in moveBuffer_ (stays set if the proxy is removed meanwhile)
     };
     void markMoved(ProxyId id);
+    // Appends the pairs of one moved proxy that updatePairs reports.
+    void findPairsOfMoved(ProxyId moved, std::vector<BodyPair>& pairs) const;
+    // updatePairs' end, once every moved proxy's pairs are in `pairs`.
+    void clearMovedAndSort(std::vector<BodyPair>& pairs);
 
     DynamicAabbTree tree_;
     std::vector<std::uint8_t> flags_;    // per proxy id
     std::vector<ProxyId> moveBuffer_;    // each id at most once
+    std::vector<std::vector<BodyPair>> chunkPairs_;  // updatePairs' by chunk of moveBuffer_; reused
 };
 
 }  // namespace simcore
