@@ -339,12 +339,20 @@ void World::finishStep(const StepPlan& plan, StepProfile& profile) {
         if (bodies_.motion[i] == MotionType::Dynamic) ++counters.dynamicBodies;
         if (bodies_.awake[i]) ++counters.awakeBodies;
     }
-    counters.pairs = static_cast<std::uint32_t>(contactManager_.contacts().size());
-    for (const Contact& contact : contactManager_.contacts()) {
-        if (!contact.hasPoints()) continue;
-        ++counters.manifolds;
-        counters.contactPoints += static_cast<std::uint32_t>(contactManager_.manifoldOf(contact).manifold.pointCount);
-    }
+    const std::vector<Contact>& contacts = contactManager_.contacts();
+    counters.pairs = static_cast<std::uint32_t>(contacts.size());
+    // Each touching pair's record is a cache miss (20 540 of them in pyramid20: 0.08 ms on one
+    // thread), so the count runs on the pool, as the last stage left it; manifolds in the high half
+    // of each chunk's sum, points in the low.
+    constexpr std::size_t kCountGrain = 1024;
+    const std::uint64_t touching = threads_.pool().parallelSum(contacts.size(), kCountGrain, [&](std::size_t begin, std::size_t end) {
+        std::uint64_t sum = 0;
+        for (std::size_t c = begin; c < end; ++c)
+            if (contacts[c].hasPoints()) sum += (std::uint64_t{1} << 32) + contactManager_.manifoldOf(contacts[c]).manifold.pointCount;
+        return sum;
+    });
+    counters.manifolds = static_cast<std::uint32_t>(touching >> 32);
+    counters.contactPoints = static_cast<std::uint32_t>(touching);
     counters.islands = plan.contacts || plan.joints ? islands_.awakeIslandCount() : 0;
     profile.maxPenetration = plan.solveContacts ? contactSolver_.maxPenetration() : 0.0f;
 
