@@ -22,6 +22,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <initializer_list>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -467,6 +468,34 @@ void TestThreads::tunerSwitchesWhenTheOtherWayGetsFaster() {
     QVERIFY2(changes <= 16, qPrintable(QString::number(changes)));
 }
 
+namespace {
+
+// One step of a world whose only stages are `stages`, run in that order, each taking
+// stageMs(stage, withWorkers) as the world's threads chose: how many ran with workers, and the
+// step's time.
+struct MadeUpStep {
+    int stagesWithWorkers = 0;
+    double ms = 0.0;
+};
+template <class StageMs>
+MadeUpStep stepStages(WorldThreads& threads, std::initializer_list<Stage> stages, StageMs&& stageMs) {
+    StepProfile profile;
+    profile.skipped.fill(StageSkip::NothingAwake);
+    MadeUpStep step;
+    for (const Stage stage : stages) {
+        const auto s = static_cast<std::size_t>(stage);
+        profile.skipped[s] = StageSkip::Ran;
+        const bool withWorkers = threads.startStage(stage);
+        step.stagesWithWorkers += withWorkers;
+        profile.stageMs[s] = stageMs(stage, withWorkers);
+        step.ms += profile.stageMs[s];
+    }
+    threads.learn(profile);
+    return step;
+}
+
+}  // namespace
+
 void TestThreads::worldThreadsFallBackWhenStageChoicesAddUpToASlowerStep() {
     // A machine where each stage alone runs faster with workers, given the other's choice, but the
     // step does not: collide with workers leaves its data split between the cores, and prepare
@@ -477,19 +506,16 @@ void TestThreads::worldThreadsFallBackWhenStageChoicesAddUpToASlowerStep() {
     double lateMs = 0.0;
     int lateSteps = 0;
     for (int step = 0; step < 2000; ++step) {
-        StepProfile profile;
-        profile.skipped.fill(StageSkip::NothingAwake);
-        profile.skipped[static_cast<std::size_t>(Stage::Collide)] = StageSkip::Ran;
-        profile.skipped[static_cast<std::size_t>(Stage::Prepare)] = StageSkip::Ran;
-        const bool collideWithWorkers = threads.startStage(Stage::Collide);
-        const bool prepareWithWorkers = threads.startStage(Stage::Prepare);
-        const double collideMs = collideWithWorkers ? 0.9 : 1.0;
-        const double prepareMs = prepareWithWorkers ? 1.3 : collideWithWorkers ? 2.0 : 1.0;
-        profile.stageMs[static_cast<std::size_t>(Stage::Collide)] = collideMs;
-        profile.stageMs[static_cast<std::size_t>(Stage::Prepare)] = prepareMs;
-        threads.learn(profile);
+        bool collideWithWorkers = false;
+        const MadeUpStep made = stepStages(threads, {Stage::Collide, Stage::Prepare}, [&](Stage stage, bool withWorkers) {
+            if (stage == Stage::Collide) {
+                collideWithWorkers = withWorkers;
+                return withWorkers ? 0.9 : 1.0;
+            }
+            return withWorkers ? 1.3 : collideWithWorkers ? 2.0 : 1.0;
+        });
         if (step >= 1000) {
-            lateMs += collideMs + prepareMs;
+            lateMs += made.ms;
             ++lateSteps;
         }
     }
@@ -508,17 +534,9 @@ void TestThreads::worldThreadsUseWorkersSoonWhenEveryStageGains() {
     threads.configure(2);
     int inlineSteps = 0;
     for (int step = 0; step < 100; ++step) {
-        StepProfile profile;
-        profile.skipped.fill(StageSkip::NothingAwake);
-        bool anyWorkers = false;
-        for (const Stage stage : {Stage::Collide, Stage::Prepare}) {
-            profile.skipped[static_cast<std::size_t>(stage)] = StageSkip::Ran;
-            const bool withWorkers = threads.startStage(stage);
-            profile.stageMs[static_cast<std::size_t>(stage)] = withWorkers ? 0.5 : 1.0;
-            anyWorkers = anyWorkers || withWorkers;
-        }
-        threads.learn(profile);
-        if (step >= 3 && !anyWorkers) ++inlineSteps;
+        const MadeUpStep made =
+            stepStages(threads, {Stage::Collide, Stage::Prepare}, [](Stage, bool withWorkers) { return withWorkers ? 0.5 : 1.0; });
+        if (step >= 3 && made.stagesWithWorkers == 0) ++inlineSteps;
     }
     // From the fourth step on, every stage inline only where the stages learn their inline time
     // (one step) and in probes that fall together (5 steps here; learning inline first, 29).
@@ -535,18 +553,10 @@ void TestThreads::worldThreadsRecoverFromAnUnluckyFirstMeasurement() {
     threads.configure(2);
     int lateWorkerSteps = 0;
     for (int step = 0; step < 600; ++step) {
-        StepProfile profile;
-        profile.skipped.fill(StageSkip::NothingAwake);
-        int stagesWithWorkers = 0;
-        for (const Stage stage : {Stage::Collide, Stage::Solve}) {
-            profile.skipped[static_cast<std::size_t>(stage)] = StageSkip::Ran;
-            const bool withWorkers = threads.startStage(stage);
-            stagesWithWorkers += withWorkers;
-            const double settledMs = withWorkers ? 0.4 : 0.56;
-            profile.stageMs[static_cast<std::size_t>(stage)] = step == 1 ? 0.865 : step < 4 ? 0.75 : settledMs;
-        }
-        threads.learn(profile);
-        if (step >= 100 && stagesWithWorkers == 2) ++lateWorkerSteps;
+        const MadeUpStep made = stepStages(threads, {Stage::Collide, Stage::Solve}, [step](Stage, bool withWorkers) {
+            return step == 1 ? 0.865 : step < 4 ? 0.75 : withWorkers ? 0.4 : 0.56;
+        });
+        if (step >= 100 && made.stagesWithWorkers == 2) ++lateWorkerSteps;
     }
     // All but probes of inline: at most 2 steps in each interval of at least kMinProbeInterval.
     QVERIFY2(lateWorkerSteps >= 500 * (1.0 - 2.0 / WorkerTuner<1>::kMinProbeInterval), qPrintable(QString::number(lateWorkerSteps)));

@@ -21,10 +21,10 @@
 // 2026-12-06.) A probe that confirms the choice doubles the time to the next one (up
 // to kMaxProbeInterval steps, so a settled choice costs almost nothing to check), and the next
 // probe also waits until the chosen way has run long enough for the probe's loss (or the
-// learning's, before the first probe) to be at most kProbeCostShare of that time: on a step of microseconds a probe that wakes the workers costs
-// several steps (a tower of 40 stepped 0.92x as fast on 2 threads as on 1, 2026-12-06). A probe
-// that wins switches and starts probing often again, as a scene that grows or falls asleep can
-// change the answer.
+// learning's, before the first probe) to be at most kProbeCostShare of that time: on a step of
+// microseconds a probe that wakes the workers costs several steps (a tower of 40 stepped 0.92x as
+// fast on 2 threads as on 1, 2026-12-06). A probe that wins switches and starts probing often
+// again, as a scene that grows or falls asleep can change the answer.
 
 #include <algorithm>
 #include <array>
