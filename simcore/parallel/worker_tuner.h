@@ -18,7 +18,9 @@
 // cost. (Judged by its first step, an inline probe paid for gathering onto one core what the
 // workers had spread over two: pyramid10 at 2 threads on cores that share no cache stepped at
 // 1.75 ms with workers, 1.9 ms in the probe, and kept the workers; 1 thread took 1.27 ms,
-// 2026-12-06.) A probe that confirms the choice doubles the time to the next one (up
+// 2026-12-06.) Two steps one way are judged by the faster, as both a move and the host's
+// preemptions only add time: one step in a few hundred took 40-80 us longer, a tower of 40's whole
+// step, and where that was the step learnt inline, 2 threads chose workers (2026-12-07). A probe that confirms the choice doubles the time to the next one (up
 // to kMaxProbeInterval steps, so a settled choice costs almost nothing to check), and the next
 // probe also waits until the chosen way has run long enough for the probe's loss (or the
 // learning's, before the first probe) to be at most kProbeCostShare of that time: on a step of
@@ -43,9 +45,12 @@ public:
     static constexpr double kAveraging = 0.25;  // weight of a new step's time in the estimate
     static constexpr double kProbeCostShare = 0.02;
 
-    // Which way a stage is learnt first: it runs that way in its first two steps, then the other way
-    // in two, each time learning from the second (a world's first step makes every pair and manifold:
-    // pyramid20 45-70 ms, then about 12), then the faster.
+    // Which way a stage is learnt first: it runs that way in its first two steps, the other way in
+    // two, and the first way again in two, each time learning from the second (a world's first step
+    // makes every pair and manifold: pyramid20 45-70 ms, then about 12), then the faster. The first
+    // way's time is the mean of its two, which cancels a scene's own trend: a tower of 40 settling
+    // took 0.046, 0.054 and 0.058 ms in steps 1, 3 and 5 at 1 thread, and learnt from steps 1 and 3
+    // alone, 2 threads chose workers in 4 runs of 6 and ran 30 steps each 10 us slower (2026-12-07).
     enum class FirstWay { Inline, Workers };
     WorkerTuner() = default;
     explicit WorkerTuner(FirstWay firstWay) : first_(firstWay == FirstWay::Workers ? kWorkers : kInline) {}
@@ -53,13 +58,12 @@ public:
     // Whether this step runs `stage` with workers.
     bool useWorkers(std::size_t stage) const {
         const StageState& state = states_[stage];
-        if (state.estimateMs[first_] < 0.0) return first_ == kWorkers;  // learning: two steps each way first
-        if (state.estimateMs[1 - first_] < 0.0) return first_ != kWorkers;
+        if (!state.learnt()) return (state.measurements == 1 ? 1 - first_ : first_) == kWorkers;
         return state.probeDue() ? !state.workersChosen : state.workersChosen;
     }
 
-    // Whether the stage has yet to measure both ways once.
-    bool learning(std::size_t stage) const { return !states_[stage].measuredBothWays(); }
+    // Whether the stage is still learning (first way, other way, first way again).
+    bool learning(std::size_t stage) const { return !states_[stage].learnt(); }
     // Whether useWorkers(stage) is not the settled choice this step: learning, or a probe.
     bool exploring(std::size_t stage) const { return learning(stage) || states_[stage].probeDue(); }
 
@@ -67,10 +71,11 @@ public:
     void record(std::size_t stage, double ms) {
         StageState& state = states_[stage];
         const int way = useWorkers(stage) ? kWorkers : kInline;
-        const bool probing = state.measuredBothWays() && state.probeDue();
+        const bool probing = state.learnt() && state.probeDue();
         if (way != state.lastWay) {  // the step moved the stage's data: not this way's time
             state.lastWay = way;
-            if (!state.measuredBothWays()) return;  // learning: the next step is learnt from
+            state.moveStepMs = ms;
+            if (!state.learnt()) return;  // learning: the next step is learnt from
             const double excessMs = std::max(0.0, ms - state.estimateMs[state.workersChosen ? kWorkers : kInline]);
             if (probing)
                 state.probeMoveMs = excessMs;  // the probe's first step; it goes on
@@ -78,10 +83,14 @@ public:
                 state.msToProbe += excessMs / kProbeCostShare;  // back after a probe that lost
             return;
         }
+        if (!state.learnt()) {
+            learn(state, way, std::min(ms, state.moveStepMs));
+            return;
+        }
         double& estimate = state.estimateMs[way];
         // A probe's time replaces the last one: averaged in, a step far off the rest (a first step)
         // outweighed the probes for hundreds of steps.
-        estimate = estimate < 0.0 || probing ? ms : estimate + kAveraging * (ms - estimate);
+        estimate = probing ? std::min(ms, state.moveStepMs) : estimate + kAveraging * (ms - estimate);
         if (probing) {
             const int chosen = state.workersChosen ? kWorkers : kInline;
             if (state.estimateMs[way] < kSwitchRatio * state.estimateMs[chosen]) {
@@ -94,36 +103,40 @@ public:
                 state.msToProbe = lossMs / kProbeCostShare;
             }
             state.stepsToProbe = state.probeInterval;
-        } else if (state.measuredBothWays()) {
-            if (state.stepsToProbe == kNotStarted) {  // both ways measured once: the faster to start
-                state.workersChosen = state.estimateMs[kWorkers] < state.estimateMs[kInline];
-                state.stepsToProbe = state.probeInterval;
-                // The first probe waits as after one that lost what the slower way's two steps did:
-                // pyramid20 at 2 threads lost 10 ms in a probe 8 steps after learning, 8% of the
-                // benchmark's 120 steps.
-                state.msToProbe = 2.0 * std::abs(state.estimateMs[kWorkers] - state.estimateMs[kInline]) / kProbeCostShare;
-            } else {
-                if (state.stepsToProbe > 0) --state.stepsToProbe;
-                state.msToProbe -= ms;
-            }
+        } else {
+            if (state.stepsToProbe > 0) --state.stepsToProbe;
+            state.msToProbe -= ms;
         }
     }
 
 private:
     static constexpr int kInline = 0, kWorkers = 1;
-    static constexpr int kNotStarted = -1;
     static constexpr int kNone = -1;
+    static constexpr int kLearningMeasurements = 3;  // first way, other way, first way again
     struct StageState {
         double estimateMs[2] = {-1.0, -1.0};  // by way; negative: not measured yet
+        int measurements = 0;                 // learning steps measured, up to kLearningMeasurements
         bool workersChosen = false;
         int probeInterval = kMinProbeInterval;
-        int stepsToProbe = kNotStarted;  // steps the choice runs before the next probe
-        double msToProbe = 0.0;          // and its time (ms) before it, after a probe that lost
-        double probeMoveMs = 0.0;        // the probe's first step over the chosen way's estimate
-        int lastWay = kNone;             // the way the last step ran
-        bool measuredBothWays() const { return estimateMs[kInline] >= 0.0 && estimateMs[kWorkers] >= 0.0; }
+        int stepsToProbe = 0;          // steps the choice runs before the next probe
+        double msToProbe = 0.0;        // and its time (ms) before it, after a probe that lost
+        double probeMoveMs = 0.0;      // the probe's first step over the chosen way's estimate
+        double moveStepMs = 0.0;       // the time of the last step that changed the way
+        int lastWay = kNone;           // the way the last step ran
+        bool learnt() const { return measurements == kLearningMeasurements; }
         bool probeDue() const { return stepsToProbe == 0 && msToProbe <= 0.0; }
     };
+    static void learn(StageState& state, int way, double ms) {
+        double& estimate = state.estimateMs[way];
+        estimate = estimate < 0.0 ? ms : 0.5 * (estimate + ms);
+        if (++state.measurements < kLearningMeasurements) return;
+        // The faster to start. The first probe waits as after one that lost what the slower way's
+        // two steps did: pyramid20 at 2 threads lost 10 ms in a probe 8 steps after learning, 8% of
+        // the benchmark's 120 steps.
+        state.workersChosen = state.estimateMs[kWorkers] < state.estimateMs[kInline];
+        state.stepsToProbe = state.probeInterval;
+        state.msToProbe = 2.0 * std::abs(state.estimateMs[kWorkers] - state.estimateMs[kInline]) / kProbeCostShare;
+    }
     int first_ = kInline;  // or kWorkers
     std::array<StageState, Stages> states_{};
 };
