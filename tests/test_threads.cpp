@@ -113,9 +113,11 @@ private slots:
     void tunerLearnsThroughATrendAndAPreemption();
     void tunerChargesTheStepAfterAProbeToTheProbe();
     void tunerSwitchesWhenTheOtherWayGetsFaster();
+    void tunerProbesSoonWhenAStageGrows();
     void worldThreadsFallBackWhenStageChoicesAddUpToASlowerStep();
     void worldThreadsUseWorkersSoonWhenEveryStageGains();
     void worldThreadsRecoverFromAnUnluckyFirstMeasurement();
+    void worldThreadsTuneTheSolverStagesTogether();
     void stepIsBitIdenticalForAnyThreadCount_data();
     void stepIsBitIdenticalForAnyThreadCount();
     void changingThreadsMidRunChangesNothing();
@@ -491,6 +493,22 @@ void TestThreads::tunerSwitchesWhenTheOtherWayGetsFaster() {
     QVERIFY2(changes <= 16, qPrintable(QString::number(changes)));
 }
 
+void TestThreads::tunerProbesSoonWhenAStageGrows() {
+    // pile1k's solve as the boxes land: 0.03 ms a step for 300 steps, where workers lose, then 1 ms
+    // inline against 0.6 with workers. By then the probes that lost have grown 64 steps apart.
+    WorkerTuner<1> tuner;
+    const auto inlineMs = [](int step) { return step < 300 ? 0.03 : 1.0; };
+    const auto workersMs = [](int step) { return step < 300 ? 0.04 : 0.6; };
+    const std::vector<bool> ways = tune(tuner, 400, inlineMs, workersMs);
+    QCOMPARE(ways[299], false);
+    // The growth shows in the second step of it (a way's time is the faster of its last two), the
+    // probe takes two more, and then workers run but for probes of inline.
+    const std::vector<bool> after(ways.begin() + 304, ways.end());
+    QVERIFY2(std::count(after.begin(), after.end(), false) <= 2 * (1 + static_cast<int>(after.size()) / WorkerTuner<1>::kMinProbeInterval),
+             qPrintable(QString::number(std::count(after.begin(), after.end(), false))));
+    QCOMPARE(after.front(), true);
+}
+
 namespace {
 
 // One step of a world whose only stages are `stages`, run in that order, each taking
@@ -583,6 +601,39 @@ void TestThreads::worldThreadsRecoverFromAnUnluckyFirstMeasurement() {
     }
     // All but probes of inline: at most 2 steps in each interval of at least kMinProbeInterval.
     QVERIFY2(lateWorkerSteps >= 500 * (1.0 - 2.0 / WorkerTuner<1>::kMinProbeInterval), qPrintable(QString::number(lateWorkerSteps)));
+}
+
+void TestThreads::worldThreadsTuneTheSolverStagesTogether() {
+    // The solver's stages deal the batches to the same threads: one with workers after one inline
+    // moves them between the cores and takes 1.5 ms, as does one inline after one with workers;
+    // with the stage before, 0.5 ms with workers and 1 ms inline. Prepare is tiny and runs from the
+    // first step; solve and relax join at step 50, when the boxes land. Tuned one by one, each
+    // would keep whatever its neighbours do (here inline: 2 ms a step against 1).
+    WorldThreads threads;
+    threads.configure(2);
+    int lateSolverSteps = 0, lateSolverStepsWithWorkers = 0;
+    bool lastWithWorkers = false;
+    for (int step = 0; step < 600; ++step) {
+        const auto stageMs = [&](Stage stage, bool withWorkers) {
+            const bool moved = withWorkers != lastWithWorkers;
+            lastWithWorkers = withWorkers;
+            if (stage == Stage::Prepare) return withWorkers ? 0.012 : 0.01;
+            return moved ? 1.5 : withWorkers ? 0.5 : 1.0;
+        };
+        if (step < 50) {
+            stepStages(threads, {Stage::Prepare}, stageMs);
+            continue;
+        }
+        const MadeUpStep made = stepStages(threads, {Stage::Prepare, Stage::Solve, Stage::Relax}, stageMs);
+        if (step >= 300) {
+            ++lateSolverSteps;
+            lateSolverStepsWithWorkers += made.stagesWithWorkers == 3;
+        }
+    }
+    // All together with workers, but for probes of inline: at most 2 steps in each interval of at
+    // least kMinProbeInterval.
+    QVERIFY2(lateSolverStepsWithWorkers >= lateSolverSteps * (1.0 - 2.0 / WorkerTuner<1>::kMinProbeInterval),
+             qPrintable(QString::number(lateSolverStepsWithWorkers)));
 }
 
 void TestThreads::stepIsBitIdenticalForAnyThreadCount_data() {
