@@ -435,13 +435,16 @@ void TestThreads::tunerLearnsThroughATrendAndAPreemption_data() {
 void TestThreads::tunerLearnsThroughATrendAndAPreemption() {
     QFETCH(double, trendMsPerStep);
     QFETCH(double, preemptionMs);
-    const auto inlineMs = [&](int step) { return 0.04 + trendMsPerStep * std::min(step, 10) + (step == 3 ? preemptionMs : 0.0); };
+    const auto inlineMs = [&](int step) {
+        return 0.04 + trendMsPerStep * std::min(step, 10) + (step == 3 ? preemptionMs : 0.0);
+    };
     const auto workersMs = [&](int step) { return 0.003 + 0.04 + trendMsPerStep * std::min(step, 10); };
     // Learnt from step 1 (workers) against step 3 (inline) alone, either made workers look faster.
     QVERIFY(workersMs(1) < inlineMs(3));
     WorkerTuner<1> tuner(WorkerTuner<1>::FirstWay::Workers);
     const std::vector<bool> ways = tune(tuner, 6 + WorkerTuner<1>::kMinProbeInterval, inlineMs, workersMs);
-    QCOMPARE(std::vector<bool>(ways.begin() + 6, ways.end()), std::vector<bool>(WorkerTuner<1>::kMinProbeInterval, false));
+    QCOMPARE(std::vector<bool>(ways.begin() + 6, ways.end()),
+             std::vector<bool>(WorkerTuner<1>::kMinProbeInterval, false));
 }
 
 void TestThreads::tunerChargesTheStepAfterAProbeToTheProbe() {
@@ -504,8 +507,9 @@ void TestThreads::tunerProbesSoonWhenAStageGrows() {
     // The growth shows in the second step of it (a way's time is the faster of its last two), the
     // probe takes two more, and then workers run but for probes of inline.
     const std::vector<bool> after(ways.begin() + 304, ways.end());
-    QVERIFY2(std::count(after.begin(), after.end(), false) <= 2 * (1 + static_cast<int>(after.size()) / WorkerTuner<1>::kMinProbeInterval),
-             qPrintable(QString::number(std::count(after.begin(), after.end(), false))));
+    const auto inlineSteps = std::count(after.begin(), after.end(), false);
+    QVERIFY2(inlineSteps <= 2 * (1 + static_cast<int>(after.size()) / WorkerTuner<1>::kMinProbeInterval),
+             qPrintable(QString::number(inlineSteps)));
     QCOMPARE(after.front(), true);
 }
 

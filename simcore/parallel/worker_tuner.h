@@ -12,21 +12,21 @@
 //
 // How: each stage keeps an estimate of its time per step with and without workers (the faster of
 // the last two steps that ran it that way: for the way it runs, the latest; for the other, its
-// latest probe), runs the way that is faster, and now and then tries the other (a probe) for two steps. A step that runs a stage the
-// other way than the step before moves the stage's data to the cores that way keeps it on, so it
-// is not that way's time: the first step of a probe and the step after it count only as the probe's
-// cost. (Judged by its first step, an inline probe paid for gathering onto one core what the
-// workers had spread over two: pyramid10 at 2 threads on cores that share no cache stepped at
-// 1.75 ms with workers, 1.9 ms in the probe, and kept the workers; 1 thread took 1.27 ms,
-// 2026-12-06.) Two steps one way are judged by the faster, as both a move and the host's
-// preemptions only add time: one step in a few hundred took 40-80 us longer, a tower of 40's whole
-// step, and where that was the step learnt inline, 2 threads chose workers (2026-12-07). A probe that confirms the choice doubles the time to the next one (up
-// to kMaxProbeInterval steps, so a settled choice costs almost nothing to check), and the next
-// probe also waits until the chosen way has run long enough for the probe's loss (or the
-// learning's, before the first probe) to be at most kProbeCostShare of that time: on a step of
-// microseconds a probe that wakes the workers costs several steps (a tower of 40 stepped 0.92x as
-// fast on 2 threads as on 1, 2026-12-06). A probe that wins switches and starts probing often
-// again, as a scene that grows or falls asleep can change the answer.
+// latest probe), runs the way that is faster, and now and then tries the other (a probe) for two
+// steps. A step that runs a stage the other way than the step before moves the stage's data to the
+// cores that way keeps it on, and the host's preemptions (one step in a few hundred took 40-80 us
+// longer, a tower of 40's whole step) only add time too: so two steps one way are judged by the
+// faster, and the first step of a probe and the step after it count as the probe's cost. (Judged
+// by its first step, an inline probe paid for gathering onto one core what the workers had spread
+// over two: pyramid10 at 2 threads on cores that share no cache stepped at 1.75 ms with workers,
+// 1.9 ms in the probe, and kept the workers; 1 thread took 1.27 ms, 2026-12-06.) A probe that
+// confirms the choice doubles the time to the next one (up to kMaxProbeInterval steps, so a settled
+// choice costs almost nothing to check), and the next probe also waits until the chosen way has run
+// long enough for the probe's loss (or the learning's, before the first probe) to be at most
+// kProbeCostShare of that time: on a step of microseconds a probe that wakes the workers costs
+// several steps (a tower of 40 stepped 0.92x as fast on 2 threads as on 1, 2026-12-06). A probe
+// that wins switches and starts probing often again, as a scene that grows or falls asleep can
+// change the answer.
 
 #include <algorithm>
 #include <array>
@@ -49,8 +49,8 @@ public:
     static constexpr double kRejudgeFactor = 2.0;
 
     // Which way a stage is learnt first: it runs that way in its first two steps, the other way in
-    // two, and the first way again in two, each time learning from the second (a world's first step
-    // makes every pair and manifold: pyramid20 45-70 ms, then about 12), then the faster. The first
+    // two, and the first way again in two, each time learning from the faster of the two (a world's
+    // first step makes every pair and manifold: pyramid20 45-70 ms, then about 12), then the faster. The first
     // way's time is the mean of its two, which cancels a scene's own trend: a tower of 40 settling
     // took 0.046, 0.054 and 0.058 ms in steps 1, 3 and 5 at 1 thread, and learnt from steps 1 and 3
     // alone, 2 threads chose workers in 4 runs of 6 and ran 30 steps each 10 us slower (2026-12-07).

@@ -106,10 +106,10 @@ public:
     }
     // After a step: what its stages took, as they ran; outside a step the workers are on again.
     // The stages learn both ways in the steps in which the step does (every stage with workers,
-    // inline, with workers again), and after that only in steps settled on workers: a stage that learnt in a probe
-    // of the step tuner's measured that probe, and stages that had learnt inline in one made every
-    // later probe lose (pyramid10 at 2 threads: 3 runs in 8 kept 1.03-1.15 ms a step instead of
-    // 0.74-0.84, 2026-12-07).
+    // inline, with workers again), and after that only in steps settled on workers: a stage that
+    // learnt in a probe of the step tuner's measured that probe, and stages that had learnt inline
+    // in one made every later probe lose (pyramid10 at 2 threads: 3 runs in 8 kept 1.03-1.15 ms a
+    // step instead of 0.74-0.84, 2026-12-07).
     void learn(const StepProfile& profile) {
         TaskPool& workers = pool();
         if (workers.threadCount() > 1) {
