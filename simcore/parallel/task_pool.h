@@ -91,9 +91,13 @@ public:
         auto body = [&](std::size_t phase, std::size_t chunk, std::size_t begin, std::size_t end) {
             chunkSums_[phaseFirstChunk_[phase] + chunk] = countChunk(phase, begin, end);
         };
-        // Phases of one chunk each leave the workers nothing to run beside the caller, only the
-        // waits between phases (tower20 solves two colours of ten manifolds, one chunk each).
-        if (workers_.empty() || !workersEnabled_ || widestPhase <= 1) {
+        // Phases of at most one chunk per thread leave no thread anything to take over from a
+        // slower one, only a wait at the end of every phase, and each chunk there is a few hundred
+        // nanoseconds of work, about what that wait costs (tower20 solves two colours of ten
+        // manifolds, one chunk each; a tower of 40 two of twenty, two chunks each: with workers
+        // its steps took 2-5 us longer, and learning and probing them cost 1 % of its run).
+        const bool phasesTooNarrow = widestPhase <= 1 || (phases > 1 && widestPhase <= chunksRun_.size());
+        if (workers_.empty() || !workersEnabled_ || phasesTooNarrow) {
             for (std::size_t q = 0; q < phases; ++q)
                 for (std::size_t k = 0, n = phaseFirstChunk_[q + 1] - phaseFirstChunk_[q]; k < n; ++k)
                     body(q, k, k * grain, std::min(phaseSize_[q], (k + 1) * grain));
