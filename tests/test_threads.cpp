@@ -114,6 +114,7 @@ private slots:
     void tunerChargesTheStepAfterAProbeToTheProbe();
     void tunerSwitchesWhenTheOtherWayGetsFaster();
     void tunerProbesSoonWhenAStageGrows();
+    void tunerResumesWithoutChargingAProbe();
     void worldThreadsFallBackWhenStageChoicesAddUpToASlowerStep();
     void worldThreadsUseWorkersSoonWhenEveryStageGains();
     void worldThreadsRecoverFromAnUnluckyFirstMeasurement();
@@ -520,6 +521,25 @@ void TestThreads::tunerProbesSoonWhenAStageGrows() {
     QVERIFY2(inlineSteps <= 2 * (1 + static_cast<int>(after.size()) / WorkerTuner<1>::kMinProbeInterval),
              qPrintable(QString::number(inlineSteps)));
     QCOMPARE(after.front(), true);
+}
+
+void TestThreads::tunerResumesWithoutChargingAProbe() {
+    // A world's stages are timed only in steps that use workers. mixed1k's prepare and solver learnt
+    // inline at 0.07 ms a step while the boxes fell, the step then ran inline for 47 steps, and when
+    // it took workers again they took 0.45 ms: charged as the cost of a probe that lost, that put
+    // their next probe off past the boxes' landing (2026-12-07).
+    WorkerTuner<1> tuner(WorkerTuner<1>::FirstWay::Workers);
+    const std::vector<bool> learning = tune(tuner, 6, [](int) { return 0.07; }, [](int) { return 0.09; });
+    QCOMPARE(learning.back(), true);  // the first way again, so the chosen way is a move away
+    const std::vector<bool> resumed = tune(tuner, 30, [](int) { return 1.0; }, [](int) { return 0.6; });
+    QCOMPARE(resumed.front(), false);
+    // The growth brings a probe as soon as the learning's loss has been paid for (2 steps), the
+    // probe takes two: workers from the sixth step on, but for probes of inline.
+    const std::vector<bool> settled(resumed.begin() + 6, resumed.end());
+    const auto inlineSteps = std::count(settled.begin(), settled.end(), false);
+    QVERIFY2(inlineSteps <= 2 * (1 + static_cast<int>(settled.size()) / WorkerTuner<1>::kMinProbeInterval),
+             qPrintable(QString::number(inlineSteps)));
+    QCOMPARE(settled.front(), true);
 }
 
 namespace {
