@@ -324,6 +324,15 @@ std::vector<Run> runsWith(const std::vector<bool>& ways, bool withWorkers) {
     return runs;
 }
 
+// Checks that `ways` runs with workers from its first step, and inline only in probes: at most
+// two steps in every kMinProbeInterval, and one probe more.
+void verifyWorkersButForProbes(const std::vector<bool>& ways) {
+    const auto inlineSteps = std::count(ways.begin(), ways.end(), false);
+    QVERIFY2(inlineSteps <= 2 * (1 + static_cast<int>(ways.size()) / WorkerTuner<1>::kMinProbeInterval),
+             qPrintable(QString::number(inlineSteps)));
+    QCOMPARE(ways.front(), true);
+}
+
 }  // namespace
 
 void TestThreads::largeArraysKeepTheirElementsOnHugePageBoundaries() {
@@ -516,11 +525,7 @@ void TestThreads::tunerProbesSoonWhenAStageGrows() {
     QCOMPARE(ways[299], false);
     // The growth shows in the second step of it (a way's time is the faster of its last two), the
     // probe takes two more, and then workers run but for probes of inline.
-    const std::vector<bool> after(ways.begin() + 304, ways.end());
-    const auto inlineSteps = std::count(after.begin(), after.end(), false);
-    QVERIFY2(inlineSteps <= 2 * (1 + static_cast<int>(after.size()) / WorkerTuner<1>::kMinProbeInterval),
-             qPrintable(QString::number(inlineSteps)));
-    QCOMPARE(after.front(), true);
+    verifyWorkersButForProbes(std::vector<bool>(ways.begin() + 304, ways.end()));
 }
 
 void TestThreads::tunerResumesWithoutChargingAProbe() {
@@ -535,11 +540,7 @@ void TestThreads::tunerResumesWithoutChargingAProbe() {
     QCOMPARE(resumed.front(), false);
     // The growth brings a probe as soon as the learning's loss has been paid for (2 steps), the
     // probe takes two: workers from the sixth step on, but for probes of inline.
-    const std::vector<bool> settled(resumed.begin() + 6, resumed.end());
-    const auto inlineSteps = std::count(settled.begin(), settled.end(), false);
-    QVERIFY2(inlineSteps <= 2 * (1 + static_cast<int>(settled.size()) / WorkerTuner<1>::kMinProbeInterval),
-             qPrintable(QString::number(inlineSteps)));
-    QCOMPARE(settled.front(), true);
+    verifyWorkersButForProbes(std::vector<bool>(resumed.begin() + 6, resumed.end()));
 }
 
 namespace {

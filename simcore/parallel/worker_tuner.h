@@ -50,10 +50,11 @@ public:
 
     // Which way a stage is learnt first: it runs that way in its first two steps, the other way in
     // two, and the first way again in two, each time learning from the faster of the two (a world's
-    // first step makes every pair and manifold: pyramid20 45-70 ms, then about 12), then the faster. The first
-    // way's time is the mean of its two, which cancels a scene's own trend: a tower of 40 settling
-    // took 0.046, 0.054 and 0.058 ms in steps 1, 3 and 5 at 1 thread, and learnt from steps 1 and 3
-    // alone, 2 threads chose workers in 4 runs of 6 and ran 30 steps each 10 us slower (2026-12-07).
+    // first step makes every pair and manifold: pyramid20 45-70 ms, then about 12), then the
+    // faster. The first way's time is the mean of its two, which cancels a scene's own trend: a
+    // tower of 40 settling took 0.046, 0.054 and 0.058 ms in steps 1, 3 and 5 at 1 thread, and
+    // learnt from steps 1 and 3 alone, 2 threads chose workers in 4 runs of 6 and ran 30 steps each
+    // 10 us slower (2026-12-07).
     enum class FirstWay { Inline, Workers };
     WorkerTuner() = default;
     explicit WorkerTuner(FirstWay firstWay) : first_(firstWay == FirstWay::Workers ? kWorkers : kInline) {}

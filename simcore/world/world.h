@@ -124,8 +124,9 @@ public:
                 tunedMs[tuned] += profile.stageMs[s];
                 tunedRan[tuned] = true;
             }
-            for (std::size_t t = 0; t < kStageCount; ++t)
-                if (stagesLearn && tunedRan[t]) stageTuner_.record(t, tunedMs[t]);
+            if (stagesLearn)
+                for (std::size_t t = 0; t < kStageCount; ++t)
+                    if (tunedRan[t]) stageTuner_.record(t, tunedMs[t]);
             stepTuner_.record(0, stepMs);
         }
         workers.setWorkersEnabled(true);
