@@ -284,6 +284,7 @@ private slots:
     void sameValueMidRunChangesNothing();
     void bodySwitchedToStaticStops();
     void heavierBodyPressesHarder();
+    void lightBoxUnderABoxMadeHeavyMidRunStaysPut();
     void shapeChangeMidRunFindsNewContacts();
     void staticBodyTurnedDynamicPressesOnWhatIsBelow();
     void narrowerLimitsHoldFromTheRestPose();
@@ -412,6 +413,32 @@ void TestWorldSetters::heavierBodyPressesHarder() {
     // Weight carried: 4000 kg before, 13000 kg after.
     const float ratio = after / before;
     QVERIFY2(std::abs(ratio - 13.0f / 4.0f) < 0.1f, qPrintable(QString("impulse ratio %1").arg(ratio)));
+}
+
+// A box of 1 kg on another, made 400 kg after a second. The solver treats contacts between bodies
+// of uneven mass apart (ContactSolver::kUnevenMassRatio), and keeps which those are from step to
+// step while no contact and no body's role or mass changes: the change of mass must reach it. Kept
+// as it was, the 1 kg box under the load was thrown about at 0.31 m/s; the 400:1 pair built so
+// stays within a few mm/s (Box2D's own sample without that care: 0.26 m/s).
+void TestWorldSetters::lightBoxUnderABoxMadeHeavyMidRunStaysPut() {
+    WorldSettings settings;
+    settings.sleep.enabled = false;
+    World world(settings);
+    BodyCreationSettings ground = box("ground", Vec3(0.0f, -0.5f, 0.0f), Vec3(20.0f, 0.5f, 20.0f));
+    ground.motion = MotionType::Static;
+    world.createBody(ground);
+    BodyCreationSettings light = box("light", Vec3(0.0f, 0.5f, 0.0f)), top = box("top", Vec3(0.0f, 1.5f, 0.0f));
+    light.mass = top.mass = 1.0f;
+    const BodyId lightBox = world.createBody(light), topBox = world.createBody(top);
+    for (int i = 0; i < 60; ++i) world.step();
+    world.setMass(topBox, 400.0f);
+    float fastest = 0.0f;
+    for (int i = 0; i < 600; ++i) {
+        world.step();
+        fastest = std::max(fastest, glm::length(world.linearVelocity(lightBox)));
+    }
+    QVERIFY2(fastest < 0.05f, qPrintable(QString("the light box reached %1 m/s").arg(fastest)));
+    QVERIFY(!world.findNonFiniteBody());
 }
 
 void TestWorldSetters::shapeChangeMidRunFindsNewContacts() {

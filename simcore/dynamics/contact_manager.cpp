@@ -385,6 +385,7 @@ void ContactManager::updateManifolds(const BodyStorage& bodies, const BroadPhase
 // A contact that gains points takes a record with no points and no impulses: its new points start
 // from zero, as they would match no old point.
 void ContactManager::takeManifold(Contact& contact) {
+    ++manifoldListVersion_;
     if (freeManifolds_.empty()) {
         contact.manifoldIndex = static_cast<std::uint32_t>(manifolds_.size());
         manifolds_.push_back({});  // the allocator would leave a bare emplace_back() unwritten
@@ -396,12 +397,14 @@ void ContactManager::takeManifold(Contact& contact) {
 }
 
 void ContactManager::releaseManifold(Contact& contact) {
+    ++manifoldListVersion_;
     freeManifolds_.push_back(contact.manifoldIndex);
     contact.manifoldIndex = Contact::kNoManifold;
     contact.normalImpulse = 0.0f;
 }
 
 void ContactManager::removeAt(std::size_t index) {
+    ++manifoldListVersion_;
     Contact& gone = contacts_[index];
     if (gone.hasPoints()) releaseManifold(gone);
     const std::uint64_t bodyKey = PairTable::key(gone.slotA, gone.slotB);
@@ -486,6 +489,7 @@ void ContactManager::removePair(std::uint32_t slotA, std::uint32_t slotB) {
 }
 
 void ContactManager::clear() {
+    ++manifoldListVersion_;
     contacts_.clear();
     manifolds_.clear();
     freeManifolds_.clear();

@@ -140,6 +140,11 @@ public:
 
     std::size_t subShapeBodyPairCount() const { return subShapeBodyPairs_.size(); }
 
+    // Changes whenever a contact gains or loses points or leaves the list (which moves another
+    // into its place): the solver colours the manifolds again only then (ContactSolver::prepare).
+    // A new contact has no points and goes at the end, so it leaves this as it was.
+    std::uint64_t manifoldListVersion() const { return manifoldListVersion_; }
+
 private:
     // A pair of bodies at least one of which has several sub-shapes: its contacts are made by the
     // mid-phase, one per sub-shape pair that came near.
@@ -176,6 +181,7 @@ private:
     std::vector<std::uint32_t> freeManifolds_;         // indices into manifolds_ not in use, taken last in first out
     std::vector<PairChange> changes_;                  // scratch, by contact: what the narrow phase found
     std::vector<std::uint32_t> gainingPoints_;         // scratch: contacts that gained points this step, in order
+    std::uint64_t manifoldListVersion_ = 0;
 };
 
 }  // namespace simcore

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <array>
-#include <bit>
 #include <cmath>
 #include <cstddef>
 
@@ -70,19 +69,6 @@ struct Correction {
 
 }  // namespace
 
-std::int32_t ContactSolver::solverBody(std::size_t denseIndex, const BodyStorage& bodies) {
-    if (bodies.motion[denseIndex] == MotionType::Static) return 0;
-    std::int32_t& index = denseToSolver_[denseIndex];
-    if (index < 0) {
-        index = static_cast<std::int32_t>(references_.size());
-        const bool moves = bodies.motion[denseIndex] == MotionType::Dynamic && bodies.awake[denseIndex];
-        references_.push_back({static_cast<std::uint32_t>(denseIndex), moves, bodies.centerOfMass[denseIndex],
-                               bodies.orientation[denseIndex]});
-        bodyColors_.push_back(0);
-    }
-    return index;
-}
-
 void ContactSolver::prepare(const ContactManager& contactManager, const BodyStorage& bodies, const JointStorage& joints,
                             const Params& params, TaskPool& pool) {
     const std::vector<Contact>& contacts = contactManager.contacts();
@@ -96,92 +82,17 @@ void ContactSolver::prepare(const ContactManager& contactManager, const BodyStor
     const float softHertz = SoftConstraint::cappedHertz(params.solver.contactHertz, h);
     const SoftConstraint baseSpring = SoftConstraint::make(softHertz, params.solver.contactDampingRatio, h);
 
-    // Solver bodies: entry 0 stands for every static body (zero velocity, never moves).
-    references_.clear();
-    references_.push_back({0, false, Vec3(0.0f), Quat(1.0f, 0.0f, 0.0f, 0.0f)});
-    bodyColors_.assign(1, 0);
-    denseToSolver_.assign(bodies.size(), -1);
+    const bool rolesChanged = bodyRolesChanged(bodies);  // called every step: it records the roles
+    if (rolesChanged || contactManager.manifoldListVersion() != colouredManifoldList_) colourManifolds(contactManager, bodies);
+    else refreshBodyReferences(bodies);
 
-    // Colour greedily in contact order (deterministic): the lowest colour free at both moving
-    // bodies. Immovable bodies are only read, so any number of lanes may share them. A manifold
-    // that finds no free colour goes to the overflow, solved one manifold per batch.
-    std::array<std::uint32_t, kColorCount + 1> perColor{}, stiffPerColor{};
-    order_.clear();
-    colorOf_.clear();
-    stiffening_.clear();
-    unevenBody_.clear();
-    // A pair's weight per substep (N s per kg of reduced mass): the unit of a manifold's load.
-    const float weightImpulse = glm::length(params.gravity) * h;
     const bool soft = params.solver.positionCorrection == PositionCorrection::SoftStep;
-    // A jointed body's contacts also carry what its joints hold, which its own mass does not
-    // measure, and a stiffer contact fighting a joint's spring pumps energy into the assembly
-    // (a light hull fixed to a heavy box gained 2.6 kJ landing): they keep the base spring.
     jointed_.assign(joints.empty() ? 0 : bodies.size(), 0);
     for (const Joint& joint : joints.joints) {
         jointed_[static_cast<std::size_t>(bodies.denseIndex(joint.bodyA))] = 1;
         if (joint.bodyB.isValid()) jointed_[static_cast<std::size_t>(bodies.denseIndex(joint.bodyB))] = 1;
     }
-    for (std::size_t ci = 0; ci < contacts.size(); ++ci) {
-        const Contact& contact = contacts[ci];
-        if (!contact.hasPoints()) continue;
-        const std::size_t a = bodies.denseIndexOfSlot(contact.slotA);
-        const std::size_t b = bodies.denseIndexOfSlot(contact.slotB);
-        const bool movesA = bodies.motion[a] == MotionType::Dynamic && bodies.awake[a];
-        const bool movesB = bodies.motion[b] == MotionType::Dynamic && bodies.awake[b];
-        if (!movesA && !movesB) continue;
-        const std::int32_t sa = solverBody(a, bodies), sb = solverBody(b, bodies);
-        const float inverseMassA = bodies.inverseMass[a], inverseMassB = bodies.inverseMass[b];
-        if (movesA && movesB &&
-            std::max(inverseMassA, inverseMassB) > kUnevenMassRatio * std::min(inverseMassA, inverseMassB)) {
-            unevenBody_.resize(references_.size(), 0);
-            unevenBody_[static_cast<std::size_t>(sa)] = unevenBody_[static_cast<std::size_t>(sb)] = 1;
-        }
-        const std::uint64_t used = (movesA ? bodyColors_[sa] : 0) | (movesB ? bodyColors_[sb] : 0);
-        int color = kOverflow;
-        if (used != ~std::uint64_t{0}) {
-            color = std::countr_zero(~used);
-            const std::uint64_t bit = std::uint64_t{1} << color;
-            if (movesA) bodyColors_[sa] |= bit;
-            if (movesB) bodyColors_[sb] |= bit;
-        }
-        float stiffening = 1.0f;
-        if (soft && weightImpulse > 0.0f && !jointedPair(a, b)) {
-            const float movingInverseMass = (movesA ? inverseMassA : 0.0f) + (movesB ? inverseMassB : 0.0f);
-            const float weights = contact.normalImpulse * movingInverseMass / weightImpulse;
-            stiffening = std::clamp(weights / kStiffLoad, 1.0f, kMaxStiffening);
-        }
-        order_.push_back(static_cast<std::uint32_t>(ci));
-        colorOf_.push_back(static_cast<std::uint8_t>(color));
-        stiffening_.push_back(stiffening);
-        ++perColor[color];
-        if (stiffening > 1.0f) ++stiffPerColor[color];
-    }
-    constraintCount_ = order_.size();
-
-    // Batches colour by colour; a colour's manifolds fill lanes in contact order, the stiffened
-    // ones first.
-    std::array<std::uint32_t, kColorCount + 1> filledStiff{}, filledPlain{};
-    std::uint32_t batchCount = 0;
-    colorCount_ = 0;
-    for (int color = 0; color <= kColorCount; ++color) {
-        colorFirstBatch_[color] = batchCount;
-        const std::uint32_t lanes = color == kOverflow ? 1 : kLanes;
-        colorStiffEnd_[color] = batchCount + (stiffPerColor[color] + lanes - 1) / lanes;
-        batchCount += (perColor[color] + lanes - 1) / lanes;
-        if (perColor[color] > 0) ++colorCount_;
-    }
-    colorFirstBatch_[kOverflow + 1] = batchCount;
-    batches_.resize(batchCount);  // cleared below, batch by batch in parallel (megabytes in pyramid20)
-
-    // Which constraint fills each lane (in order_), so that the batches can be filled side by side.
-    laneConstraint_.assign(batches_.size() * kLanes, kNoConstraint);
-    for (std::size_t k = 0; k < order_.size(); ++k) {
-        const int color = colorOf_[k];
-        const std::uint32_t lanes = color == kOverflow ? 1 : kLanes;
-        const std::uint32_t slot =
-            stiffening_[k] > 1.0f ? filledStiff[color]++ : stiffPerColor[color] + filledPlain[color]++;
-        laneConstraint_[(colorFirstBatch_[color] + slot / lanes) * kLanes + slot % lanes] = static_cast<std::uint32_t>(k);
-    }
+    assignLanes(contacts, bodies, glm::length(params.gravity) * h, soft);
 
     // Each batch is filled from its own lanes' contacts, then gets its effective masses: in
     // parallel. Every solver body exists by now, so solverBody only looks them up.
@@ -307,7 +218,6 @@ void ContactSolver::prepare(const ContactManager& contactManager, const BodyStor
 
     velocities_.assign(references_.size() + batches_.size(), BodyRow{});
     changedInPass_.assign(references_.size(), 0);
-    unevenBody_.resize(references_.size(), 0);
     supportDepth_.clear();
     if (std::find(unevenBody_.begin(), unevenBody_.end(), 1) != unevenBody_.end()) findSupportDepths();
     pass_ = 1;  // no body counts as changed before the first pass

@@ -170,6 +170,8 @@ private:
     // pyramid10's colours split evenly between two threads (with 4, a colour of 5 chunks went 2 and
     // 3): its step at 2 threads 0.7-1.4% shorter, pyramid20's unchanged; 8 was 3-4% longer.
     static constexpr std::size_t kBatchGrain = 2;
+    // Manifolds per chunk of finding their stiffening: a few microseconds of work.
+    static constexpr std::size_t kEntryGrain = 2048;
     // Solver bodies per chunk of loading and storing their rows: a few microseconds of work.
     static constexpr std::size_t kBodyGrain = 1024;
     // Slices of each colour per thread when filling and storing (forEachColorSlice): more than one,
@@ -256,6 +258,25 @@ private:
     };
 
     std::int32_t solverBody(std::size_t denseIndex, const BodyStorage& bodies);
+    // What colouring the manifolds reads of a body: which body has the dense index (its slot), and
+    // whether it is static, or moves (and then with what inverse mass, for kUnevenMassRatio).
+    struct ColouredBody {
+        std::uint32_t slot;
+        float role;  // kStaticRole, kStillRole (kinematic or asleep), or the inverse mass of a moving body
+        bool operator==(const ColouredBody&) const = default;
+    };
+    static constexpr float kStaticRole = -2.0f, kStillRole = -1.0f;
+    // Whether a body's slot or role changed since the last call (the first call: true); records them.
+    bool bodyRolesChanged(const BodyStorage& bodies);
+    // The manifolds' colours, solver bodies and batches, from the contacts with points in contact
+    // order: a pure function of the contact list and the bodies' roles, so prepare keeps them from
+    // step to step while neither changes (a resting pyramid's never do after its first step), and
+    // refreshes only the solver bodies' poses (refreshBodyReferences).
+    void colourManifolds(const ContactManager& contactManager, const BodyStorage& bodies);
+    void refreshBodyReferences(const BodyStorage& bodies);
+    // Each manifold's stiffening, from the load it carried last step, and its lane: in each colour
+    // the stiffened manifolds first. Colour by colour on the pool's threads.
+    void assignLanes(const std::vector<Contact>& contacts, const BodyStorage& bodies, float weightImpulse, bool soft);
     // Which batches a pass solves: all; those holding a stiffened manifold with a body marked
     // (changedInPass_) in this pass or the one before; in the restricted relax passes, any batch
     // with such a body.
@@ -310,10 +331,15 @@ private:
     std::vector<BodyRow> velocities_, motion_;  // by solver body
     std::uint32_t motionCount_ = 0;             // motion_ loaded since prepare, counting prepare's
     std::vector<BodyReference> references_;    // by solver body; entry 0 is the immovable body
-    std::vector<std::int32_t> denseToSolver_;  // scratch: -1 where a body has no solver entry
-    std::vector<std::uint64_t> bodyColors_;    // scratch: colours used at each solver body
-    std::vector<std::uint32_t> order_;         // scratch: constraints sorted by colour
-    std::vector<std::uint8_t> colorOf_;        // scratch
+    // Kept between steps with the colouring (colourManifolds):
+    std::vector<std::int32_t> denseToSolver_;  // -1 where a body has no solver entry
+    std::vector<std::uint64_t> bodyColors_;    // colours used at each solver body
+    std::vector<std::uint32_t> order_;         // the manifolds' contact indices, in contact order
+    std::vector<std::uint32_t> colorEntries_;  // entries of order_, colour by colour
+    std::array<std::uint32_t, kColorCount + 2> colorFirstEntry_{};  // colour c: [first[c], first[c + 1])
+    std::vector<ColouredBody> colouredBodies_;  // by dense index, as last coloured
+    std::uint64_t colouredManifoldList_ = ~std::uint64_t{0};  // manifoldListVersion() as last coloured; none yet
+    std::vector<std::uint8_t> colorOf_;        // scratch: by entry of order_
     std::vector<float> stiffening_;            // scratch: by entry of order_, the spring's factor (1: none)
     std::vector<std::uint8_t> jointed_;        // scratch: by dense body index, 1 with a joint (empty: none)
     bool jointedBody(std::size_t denseIndex) const { return !jointed_.empty() && jointed_[denseIndex]; }
