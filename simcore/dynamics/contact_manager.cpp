@@ -343,11 +343,18 @@ void ContactManager::updateManifolds(const BodyStorage& bodies, const BroadPhase
     // parallel again, each into its own record), then the separated contacts removed in the order a
     // single pass would remove them (removal moves the last contact into the gap: the order is part
     // of the state).
+    // A resting pile changes nothing, and then the passes over every contact on this thread are skipped.
     changes_.resize(contacts_.size());
-    pool.parallelFor(contacts_.size(), kNarrowPhaseGrain, [&](std::size_t, std::size_t begin, std::size_t end) {
-        for (std::size_t c = begin; c < end; ++c)
-            changes_[c] = refreshManifold(contacts_[c], bodies, broadPhase, speculativeDistance, reuseDistance, timeStep);
-    });
+    const std::uint64_t changed =
+        pool.parallelSum(contacts_.size(), kNarrowPhaseGrain, [&](std::size_t begin, std::size_t end) {
+            std::uint64_t count = 0;
+            for (std::size_t c = begin; c < end; ++c) {
+                changes_[c] = refreshManifold(contacts_[c], bodies, broadPhase, speculativeDistance, reuseDistance, timeStep);
+                count += changes_[c] != PairChange::None;
+            }
+            return count;
+        });
+    if (changed == 0) return;
     gainingPoints_.clear();
     for (std::size_t c = 0; c < contacts_.size(); ++c) {
         if (changes_[c] == PairChange::LosesPoints) releaseManifold(contacts_[c]);
