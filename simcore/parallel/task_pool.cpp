@@ -43,7 +43,7 @@ void pause(int spins) {
 
 TaskPool::TaskPool(int threads) {
     const int total = threads > 0 ? threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-    chunksRun_ = std::vector<ChunksRun>(static_cast<std::size_t>(total));
+    progress_ = std::vector<Progress>(static_cast<std::size_t>(total));
     growPhases(1);
     workers_.reserve(static_cast<std::size_t>(total - 1));
     for (int i = 1; i < total; ++i) workers_.emplace_back([this, i] { workerLoop(i); });
@@ -52,7 +52,7 @@ TaskPool::TaskPool(int threads) {
 void TaskPool::growPhases(std::size_t phases) {
     phaseSize_.resize(phases);
     phaseFirstChunk_.resize(phases + 1, 0);
-    shares_ = std::vector<Share>(phases * chunksRun_.size());
+    shares_ = std::vector<Share>(phases * progress_.size());
 }
 
 TaskPool::~TaskPool() {
@@ -68,7 +68,7 @@ TaskPool::~TaskPool() {
 // that joined and may still be running a chunk of it (its body lives on the caller's stack).
 void TaskPool::run(const Job& job) {
     job_ = job;
-    const std::size_t participants = chunksRun_.size();
+    const std::size_t participants = progress_.size();
     for (std::size_t q = 0; q < job.phases; ++q) {
         const std::size_t first = phaseFirstChunk_[q], chunks = phaseFirstChunk_[q + 1] - first;
         for (std::size_t p = 0; p < participants; ++p) {
@@ -77,7 +77,10 @@ void TaskPool::run(const Job& job) {
             share.end = first + chunks * (p + 1) / participants;
         }
     }
-    for (ChunksRun& run : chunksRun_) run.count.store(0, std::memory_order_relaxed);
+    for (Progress& progress : progress_) {
+        progress.chunksRun.store(0, std::memory_order_relaxed);
+        progress.sum = 0;
+    }
     generation_.fetch_add(1);  // odd: open; publishes job_ to the workers that see it
     // One wake-up call until a worker answers it: a job every few microseconds would otherwise make
     // a system call each while the workers take tens of microseconds to wake (a stage the tuner
@@ -94,8 +97,10 @@ void TaskPool::run(const Job& job) {
 // A worker that joins late goes through the phases already done, finding no chunk left in them.
 void TaskPool::runChunks(int participant) {
     const Job& job = job_;
-    const std::size_t participants = chunksRun_.size();
+    const std::size_t participants = progress_.size();
+    Progress& mine = progress_[static_cast<std::size_t>(participant)];
     std::size_t ran = 0;
+    std::uint64_t sum = 0;
     for (std::size_t q = 0; q < job.phases; ++q) {
         const std::size_t first = phaseFirstChunk_[q];
         for (std::size_t i = 0; i < participants; ++i) {
@@ -103,19 +108,20 @@ void TaskPool::runChunks(int participant) {
             for (std::size_t k = share.next.fetch_add(1, std::memory_order_relaxed); k < share.end;
                  k = share.next.fetch_add(1, std::memory_order_relaxed), ++ran) {
                 const std::size_t chunk = k - first;
-                job.call(job.context, q, chunk, chunk * job.grain, std::min(phaseSize_[q], (chunk + 1) * job.grain));
+                sum += job.call(job.context, q, chunk, chunk * job.grain, std::min(phaseSize_[q], (chunk + 1) * job.grain));
             }
         }
         // The next phase may read what this one wrote: wait for the others' chunks of it.
-        chunksRun_[static_cast<std::size_t>(participant)].count.store(ran, std::memory_order_release);
+        mine.chunksRun.store(ran, std::memory_order_release);
         const std::size_t phaseEnd = phaseFirstChunk_[q + 1];
         for (int spins = 0;; ++spins) {
             std::size_t done = 0;
-            for (const ChunksRun& run : chunksRun_) done += run.count.load(std::memory_order_acquire);
+            for (const Progress& progress : progress_) done += progress.chunksRun.load(std::memory_order_acquire);
             if (done >= phaseEnd) break;
             pause(spins);
         }
     }
+    mine.sum = sum;  // read by run()'s caller once every worker has left the job
 }
 
 std::uint64_t TaskPool::awaitGeneration(std::uint64_t seen) {

@@ -20,6 +20,7 @@
 #include <cstdint>
 #include <mutex>
 #include <thread>
+#include <type_traits>
 #include <vector>
 
 namespace simcore {
@@ -39,8 +40,7 @@ public:
     // (the same chunks, so the same results). For work the workers would only slow down.
     void setWorkersEnabled(bool enabled) { workersEnabled_ = enabled; }
 
-    // Chunks of `grain` indices (the last may be shorter): the unit of work, and the slots a
-    // caller's per-chunk results go in.
+    // Chunks of `grain` indices (the last may be shorter): the unit of work.
     static std::size_t chunkCount(std::size_t count, std::size_t grain) { return (count + grain - 1) / grain; }
 
     // Calls body(chunk, begin, end) for every chunk of [0, count); chunk k is [k grain, (k + 1) grain)
@@ -54,15 +54,16 @@ public:
         }
         auto call = [](void* context, std::size_t, std::size_t chunk, std::size_t begin, std::size_t end) {
             (*static_cast<Body*>(context))(chunk, begin, end);
+            return std::uint64_t{0};
         };
         phaseSize_[0] = count;
         phaseFirstChunk_[1] = chunks;
         run({call, &body, grain, 1});
     }
 
-    // Sums count(begin, end) over the chunks of [0, count), as parallelFor runs them; the chunks'
-    // counts are added in chunk order (so the sum is the same for any thread count, and a count
-    // is never a shared variable that threads race on).
+    // Sums count(begin, end) over the chunks of [0, count), as parallelFor runs them. Each thread
+    // adds up the counts of the chunks it ran and the caller adds the threads' sums: integers, so
+    // the total is the same for any thread count, and no count is a variable threads share.
     template <class Count>
     std::uint64_t parallelSum(std::size_t count, std::size_t grain, Count&& countChunk) {
         return parallelSumInPhases(1, grain, [count](std::size_t) { return count; },
@@ -71,8 +72,7 @@ public:
 
     // parallelSum over [0, phaseSize(q)) with countChunk(q, begin, end) for the phases q = 0, 1, ...
     // in turn, as one job: no chunk of a phase starts before every chunk of the phase before has
-    // finished, so a phase may read what the one before wrote. The sum adds the phases' chunks in
-    // order. Between phases a participant only waits for the others' chunks, where a parallelFor
+    // finished, so a phase may read what the one before wrote. Between phases a participant only waits for the others' chunks, where a parallelFor
     // per phase hands a new job to the workers and waits for them to leave the last: a solver
     // colour takes a few microseconds, and that hand-over was a fifth of it.
     template <class Size, class Count>
@@ -87,36 +87,33 @@ public:
             chunks += phaseChunks;
         }
         phaseFirstChunk_[phases] = chunks;
-        if (chunkSums_.size() < chunks) chunkSums_.resize(chunks);  // only when the work grew
-        auto body = [&](std::size_t phase, std::size_t chunk, std::size_t begin, std::size_t end) {
-            chunkSums_[phaseFirstChunk_[phase] + chunk] = countChunk(phase, begin, end);
-        };
         // Phases of at most one chunk per thread leave no thread anything to take over from a
         // slower one, only a wait at the end of every phase, and each chunk there is a few hundred
         // nanoseconds of work, about what that wait costs (tower20 solves two colours of ten
         // manifolds, one chunk each; a tower of 40 two of twenty, two chunks each: with workers
         // its steps took 2-5 us longer, and learning and probing them cost 1 % of its run).
-        const bool phasesTooNarrow = widestPhase <= 1 || (phases > 1 && widestPhase <= chunksRun_.size());
+        const bool phasesTooNarrow = widestPhase <= 1 || (phases > 1 && widestPhase <= progress_.size());
+        std::uint64_t sum = 0;
         if (workers_.empty() || !workersEnabled_ || phasesTooNarrow) {
             for (std::size_t q = 0; q < phases; ++q)
                 for (std::size_t k = 0, n = phaseFirstChunk_[q + 1] - phaseFirstChunk_[q]; k < n; ++k)
-                    body(q, k, k * grain, std::min(phaseSize_[q], (k + 1) * grain));
-        } else {
-            auto call = [](void* context, std::size_t phase, std::size_t chunk, std::size_t begin, std::size_t end) {
-                (*static_cast<decltype(body)*>(context))(phase, chunk, begin, end);
-            };
-            run({call, &body, grain, phases});
+                    sum += countChunk(q, k * grain, std::min(phaseSize_[q], (k + 1) * grain));
+            return sum;
         }
-        std::uint64_t sum = 0;
-        for (std::size_t k = 0; k < chunks; ++k) sum += chunkSums_[k];
+        auto call = [](void* context, std::size_t phase, std::size_t, std::size_t begin, std::size_t end) {
+            return std::uint64_t{(*static_cast<std::remove_reference_t<Count>*>(context))(phase, begin, end)};
+        };
+        run({call, &countChunk, grain, phases});
+        for (const Progress& progress : progress_) sum += progress.sum;
         return sum;
     }
 
 private:
     // A job without its type, so workers need no std::function (which may allocate): call(context,
-    // phase, chunk, begin, end) for the chunks of each phase, the phases' sizes in phaseSize_.
+    // phase, chunk, begin, end) for the chunks of each phase, the phases' sizes in phaseSize_; it
+    // returns the chunk's count, summed per participant.
     struct Job {
-        void (*call)(void*, std::size_t, std::size_t, std::size_t, std::size_t) = nullptr;
+        std::uint64_t (*call)(void*, std::size_t, std::size_t, std::size_t, std::size_t) = nullptr;
         void* context = nullptr;
         std::size_t grain = 0, phases = 0;
     };
@@ -130,14 +127,16 @@ private:
     // since a step's jobs follow each other within microseconds, then asleep. Returns the generation.
     std::uint64_t awaitGeneration(std::uint64_t seen);
 
+    // What the threads write while a job runs (the generation, the count of busy workers, each
+    // participant's progress) has cache lines of its own, apart from the job they read, wherever
+    // the heap puts the pool.
     std::vector<std::thread> workers_;
     bool workersEnabled_ = true;
-    std::vector<std::uint64_t> chunkSums_;  // parallelSum's, by chunk; reused
-    Job job_;  // written by run() only while no worker is in a job
+    alignas(64) Job job_;  // written by run() only while no worker is in a job
     // Odd while a job is open to workers. A worker joins by counting itself in busyWorkers_ and
     // then finding the generation unchanged; run() closes the job and then waits for busyWorkers_
     // to reach zero, so it never misses a worker that joined (both sides are sequentially consistent).
-    std::atomic<std::uint64_t> generation_{0};
+    alignas(64) std::atomic<std::uint64_t> generation_{0};
     // Each phase's chunks are dealt out in one contiguous share per participant (the caller is 0,
     // worker i is i), and each takes its own share first: a colour's batches of the solver then go
     // to the same core pass after pass, with their data in its cache. Taken freely, chunks moved
@@ -149,15 +148,18 @@ private:
         std::size_t end = 0;
     };
     std::vector<Share> shares_;  // by phase, then participant
-    // Chunks of the current job each participant has run, as it last published (release) on
-    // finishing its part of a phase: phase q is done when they add up to phaseFirstChunk_[q + 1].
-    struct alignas(64) ChunksRun {
-        std::atomic<std::size_t> count{0};
+    // Each participant's part of the current job: the chunks it has run, as it last published
+    // (release) on finishing its part of a phase (phase q is done when they add up to
+    // phaseFirstChunk_[q + 1]), and the sum of its chunks' counts (integers: the total is the same
+    // whichever thread ran which chunk), written as it leaves the job.
+    struct alignas(64) Progress {
+        std::atomic<std::size_t> chunksRun{0};
+        std::uint64_t sum = 0;
     };
-    std::vector<ChunksRun> chunksRun_;       // by participant
+    std::vector<Progress> progress_;         // by participant
     std::vector<std::size_t> phaseSize_;     // the current job's, by phase
     std::vector<std::size_t> phaseFirstChunk_;  // by phase, and one past the last: chunks before it
-    std::atomic<int> busyWorkers_{0};        // workers in the current job
+    alignas(64) std::atomic<int> busyWorkers_{0};  // workers in the current job
     std::atomic<int> sleepingWorkers_{0};    // workers blocked on wake_ (changed under mutex_)
     std::atomic<bool> wakeCalled_{false};    // notified, and no worker has woken from it yet
     std::atomic<bool> stopping_{false};
