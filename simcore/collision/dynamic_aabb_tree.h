@@ -30,7 +30,12 @@ constexpr ProxyId kNullProxy = 0xFFFFFFFFu;
 
 struct AabbTreeSettings {
     float margin = 0.1f;            // m added on every side of the tight box
-    float displacementScale = 2.0f; // the fat box also reaches this many predicted displacements ahead
+    // The fat box also reaches this many predicted displacements (a step's travel) ahead. Each body
+    // that leaves its fat box is reinserted, one after another on one thread: a thousand falling
+    // boxes left theirs every second or third step, 0.8-1.2 ms each time (pile1k's broad phase
+    // 12 ms of its 65 at 1 thread with 2 displacements, 8.6 with 4). A fast body's longer box
+    // finds a few more pairs: bullets_vs_walls 0.0116 -> 0.0139 ms a step.
+    float displacementScale = 4.0f;
     float shrinkAreaRatio = 4.0f;   // a fat box this many times the area of a fresh one is rebuilt
 };
 
