@@ -54,6 +54,10 @@ public:
     BodyId idAt(std::size_t denseIndex) const { return slots_.idAt(denseIndex); }
     std::size_t denseIndexOfSlot(std::uint32_t slot) const { return slots_.denseIndexOfSlot(slot); }  // slot must be live
 
+    // Whether the step moves the body: dynamic and awake (static, kinematic and sleeping bodies
+    // take part in contacts as immovable).
+    bool isAwakeDynamic(std::size_t i) const { return motion[i] == MotionType::Dynamic && awake[i]; }
+
     Vec3 origin(std::size_t i) const { return centerOfMass[i] - orientation[i] * localCenterOfMass[i]; }
     Transform transform(std::size_t i) const { return {origin(i), orientation[i]}; }
     void refreshInverseInertiaWorld(std::size_t i);

@@ -15,7 +15,7 @@ std::int32_t ContactSolver::solverBody(std::size_t denseIndex, const BodyStorage
     std::int32_t& index = denseToSolver_[denseIndex];
     if (index < 0) {
         index = static_cast<std::int32_t>(references_.size());
-        const bool moves = bodies.motion[denseIndex] == MotionType::Dynamic && bodies.awake[denseIndex];
+        const bool moves = bodies.isAwakeDynamic(denseIndex);
         references_.push_back({static_cast<std::uint32_t>(denseIndex), moves, bodies.centerOfMass[denseIndex],
                                bodies.orientation[denseIndex]});
         bodyColors_.push_back(0);
@@ -27,7 +27,7 @@ bool ContactSolver::bodyRolesChanged(const BodyStorage& bodies) {
     bool changed = colouredBodies_.size() != bodies.size();
     colouredBodies_.resize(bodies.size());
     for (std::size_t i = 0; i < bodies.size(); ++i) {
-        const bool moves = bodies.motion[i] == MotionType::Dynamic && bodies.awake[i];
+        const bool moves = bodies.isAwakeDynamic(i);
         const ColouredBody now{bodies.idAt(i).index, bodies.motion[i] == MotionType::Static ? kStaticRole
                                                      : moves                                ? bodies.inverseMass[i]
                                                                                             : kStillRole};
@@ -56,8 +56,8 @@ void ContactSolver::colourManifolds(const ContactManager& contactManager, const 
         if (!contact.hasPoints()) continue;
         const std::size_t a = bodies.denseIndexOfSlot(contact.slotA);
         const std::size_t b = bodies.denseIndexOfSlot(contact.slotB);
-        const bool movesA = bodies.motion[a] == MotionType::Dynamic && bodies.awake[a];
-        const bool movesB = bodies.motion[b] == MotionType::Dynamic && bodies.awake[b];
+        const bool movesA = bodies.isAwakeDynamic(a);
+        const bool movesB = bodies.isAwakeDynamic(b);
         if (!movesA && !movesB) continue;
         const std::int32_t sa = solverBody(a, bodies), sb = solverBody(b, bodies);
         const float inverseMassA = bodies.inverseMass[a], inverseMassB = bodies.inverseMass[b];
@@ -84,6 +84,7 @@ void ContactSolver::colourManifolds(const ContactManager& contactManager, const 
     // Batches colour by colour, and each colour's entries in contact order.
     std::uint32_t batchCount = 0, entryCount = 0;
     colorCount_ = 0;
+    colorsInUse_ = 0;
     for (int color = 0; color <= kColorCount; ++color) {
         colorFirstBatch_[color] = batchCount;
         colorFirstEntry_[color] = entryCount;
@@ -91,6 +92,7 @@ void ContactSolver::colourManifolds(const ContactManager& contactManager, const 
         batchCount += (perColor[color] + lanes - 1) / lanes;
         entryCount += perColor[color];
         if (perColor[color] > 0) ++colorCount_;
+        if (perColor[color] > 0 && color != kOverflow) colorsInUse_ = static_cast<std::size_t>(color) + 1;
     }
     colorFirstBatch_[kOverflow + 1] = batchCount;
     colorFirstEntry_[kOverflow + 1] = entryCount;
@@ -124,7 +126,7 @@ void ContactSolver::assignLanes(const std::vector<Contact>& contacts, const Body
             float stiffening = 1.0f;
             if (soft && weightImpulse > 0.0f && !jointedPair(a, b)) {
                 const auto movingInverseMass = [&](std::size_t i) {
-                    return bodies.motion[i] == MotionType::Dynamic && bodies.awake[i] ? bodies.inverseMass[i] : 0.0f;
+                    return bodies.isAwakeDynamic(i) ? bodies.inverseMass[i] : 0.0f;
                 };
                 const float weights = contact.normalImpulse * (movingInverseMass(a) + movingInverseMass(b)) / weightImpulse;
                 stiffening = std::clamp(weights / kStiffLoad, 1.0f, kMaxStiffening);
@@ -133,8 +135,7 @@ void ContactSolver::assignLanes(const std::vector<Contact>& contacts, const Body
         }
     });
     laneConstraint_.resize(batches_.size() * kLanes);
-    std::size_t colors = kOverflow;  // those in use, as in forEachBatch, and the overflow
-    while (colors > 0 && colorFirstEntry_[colors] == colorFirstEntry_[colors - 1]) --colors;
+    const std::size_t colors = colorsInUse_;  // and the overflow after them
     pool_->parallelFor(colors + 1, 1, [&](std::size_t index, std::size_t, std::size_t) {
         const std::size_t color = index < colors ? index : kOverflow;
         const std::uint32_t* first = colorEntries_.data() + colorFirstEntry_[color];

@@ -68,10 +68,6 @@ void combineMaterials(Contact& contact, const BodyStorage& bodies, std::size_t a
 // surface's triangles); a convex shape is its own single sub-shape and collides whole.
 bool hasSeveralSubShapes(const Shape& shape) { return !isConvex(shape.type); }
 
-bool isAwakeDynamic(const BodyStorage& bodies, std::size_t i) {
-    return bodies.motion[i] == MotionType::Dynamic && bodies.awake[i];
-}
-
 // Speculative margin: how far the surfaces can approach within the step (relative linear speed
 // plus each body's spin times its reach), so a fast impact is met at contact rather than
 // discovered a step later deep inside, where pushing out adds energy.
@@ -269,7 +265,7 @@ void ContactManager::findSubShapePairs(const BodyStorage& bodies, const BroadPha
         const std::size_t b = bodies.denseIndexOfSlot(pair.slotB);
         // The same tests, in the same order, as refreshManifold: a sleeping pair keeps its
         // contacts, and a pair whose fat boxes parted goes (its contacts go in the narrow phase).
-        if (!isAwakeDynamic(bodies, a) && !isAwakeDynamic(bodies, b)) {
+        if (!bodies.isAwakeDynamic(a) && !bodies.isAwakeDynamic(b)) {
             ++p;
             continue;
         }
@@ -309,7 +305,7 @@ ContactManager::PairChange ContactManager::refreshManifold(const Contact& contac
     const std::size_t a = bodies.denseIndexOfSlot(contact.slotA);
     const std::size_t b = bodies.denseIndexOfSlot(contact.slotB);
     // A sleeping pair keeps its manifold, ready for when it wakes.
-    if (!isAwakeDynamic(bodies, a) && !isAwakeDynamic(bodies, b)) return PairChange::None;
+    if (!bodies.isAwakeDynamic(a) && !bodies.isAwakeDynamic(b)) return PairChange::None;
     // Its bodies' fat boxes no longer overlap: it goes.
     if (!broadPhase.testOverlap(bodies.proxy[a], bodies.proxy[b])) return PairChange::Separates;
     ManifoldRecord* record = contact.hasPoints() ? &manifolds_[contact.manifoldIndex] : nullptr;
@@ -342,8 +338,7 @@ void ContactManager::updateManifolds(const BodyStorage& bodies, const BroadPhase
     // thread, in contact order: records given back, then taken (and their first manifolds made, in
     // parallel again, each into its own record), then the separated contacts removed in the order a
     // single pass would remove them (removal moves the last contact into the gap: the order is part
-    // of the state).
-    // A resting pile changes nothing, and then the passes over every contact on this thread are skipped.
+    // of the state). A resting pile changes nothing, and then those passes are skipped.
     changes_.resize(contacts_.size());
     const std::uint64_t changed =
         pool.parallelSum(contacts_.size(), kNarrowPhaseGrain, [&](std::size_t begin, std::size_t end) {

@@ -121,8 +121,8 @@ void ContactSolver::prepare(const ContactManager& contactManager, const BodyStor
         const ContactManifold& manifold = record.manifold;
         const std::size_t a = bodies.denseIndexOfSlot(contact.slotA);
         const std::size_t b = bodies.denseIndexOfSlot(contact.slotB);
-        const bool movesA = bodies.motion[a] == MotionType::Dynamic && bodies.awake[a];
-        const bool movesB = bodies.motion[b] == MotionType::Dynamic && bodies.awake[b];
+        const bool movesA = bodies.isAwakeDynamic(a);
+        const bool movesB = bodies.isAwakeDynamic(b);
         batch.bodyA[lane] = solverBody(a, bodies);
         batch.bodyB[lane] = solverBody(b, bodies);
         if (movesA) batch.storeA[lane] = batch.bodyA[lane];

@@ -367,15 +367,16 @@ private:
     Params params_;
     float maxPenetration_ = 0.0f;
     std::size_t constraintCount_ = 0, colorCount_ = 0;
+    // Colours 0 .. colorsInUse_ - 1 hold manifolds, the overflow aside: a manifold takes the lowest
+    // colour free at its bodies, so the colours in use come first.
+    std::size_t colorsInUse_ = 0;
     bool usesFriction_ = false;
     bool usesRestitution_ = false;
 };
 
 template <class SolveBatch>
 inline bool ContactSolver::forEachBatch(SolveBatch&& solveBatch, bool stiffOnly) {
-    // The colours in use: a manifold takes the lowest colour free at its bodies, so they come first.
-    std::size_t colors = kOverflow;
-    while (colors > 0 && colorFirstBatch_[colors] == colorFirstBatch_[colors - 1]) --colors;
+    const std::size_t colors = colorsInUse_;
     const std::uint32_t* colorEnd = stiffOnly ? colorStiffEnd_.data() : colorFirstBatch_.data() + 1;
     const std::size_t overflowEnd = colorEnd[kOverflow];
     // Colour after colour, as one job (a colour of pyramid10 is a few microseconds of work).

@@ -136,7 +136,7 @@ std::uint32_t BodyIntegrator::integrateVelocities(BodyStorage& bodies, Integrato
 
 bool BodyIntegrator::integrateVelocity(BodyStorage& bodies, std::size_t i, bool keepStart, const VelocityIntegration& params,
                                        float dt) {
-    const bool moves = bodies.motion[i] == MotionType::Dynamic && bodies.awake[i];
+    const bool moves = bodies.isAwakeDynamic(i);
     // The relax passes of the substep before may have left a torn assembly beyond the bound.
     const bool bounded = moves && boundVelocity(bodies.linearVelocity[i], bodies.angularVelocity[i], dt);
     if (keepStart) {
@@ -161,7 +161,7 @@ bool BodyIntegrator::integrateVelocity(BodyStorage& bodies, std::size_t i, bool 
 std::uint32_t BodyIntegrator::boundVelocities(BodyStorage& bodies, float dt) const {
     std::uint32_t bounded = 0;
     for (std::size_t i = 0; i < bodies.size(); ++i)
-        if (bodies.motion[i] == MotionType::Dynamic && bodies.awake[i] &&
+        if (bodies.isAwakeDynamic(i) &&
             boundVelocity(bodies.linearVelocity[i], bodies.angularVelocity[i], dt))
             ++bounded;
     return bounded;

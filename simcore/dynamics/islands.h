@@ -46,7 +46,7 @@ void Islands::wakeTouchedIslands(BodyStorage& bodies, OnWake&& onWake) {
     const std::size_t n = bodies.size();
     islandAwake_.assign(n, 0);
     for (std::size_t i = 0; i < n; ++i)
-        if (bodies.motion[i] == MotionType::Dynamic && bodies.awake[i]) islandAwake_[find(static_cast<std::uint32_t>(i))] = 1;
+        if (bodies.isAwakeDynamic(i)) islandAwake_[find(static_cast<std::uint32_t>(i))] = 1;
     awakeIslandCount_ = 0;
     for (std::size_t i = 0; i < n; ++i) {
         if (bodies.motion[i] != MotionType::Dynamic) continue;

@@ -72,9 +72,10 @@ public:
 
     // parallelSum over [0, phaseSize(q)) with countChunk(q, begin, end) for the phases q = 0, 1, ...
     // in turn, as one job: no chunk of a phase starts before every chunk of the phase before has
-    // finished, so a phase may read what the one before wrote. Between phases a participant only waits for the others' chunks, where a parallelFor
-    // per phase hands a new job to the workers and waits for them to leave the last: a solver
-    // colour takes a few microseconds, and that hand-over was a fifth of it.
+    // finished, so a phase may read what the one before wrote. Between phases a participant only
+    // waits for the others' chunks, where a parallelFor per phase hands a new job to the workers and
+    // waits for them to leave the last: a solver colour takes a few microseconds, and that
+    // hand-over was a fifth of it.
     template <class Size, class Count>
     std::uint64_t parallelSumInPhases(std::size_t phases, std::size_t grain, Size&& phaseSize, Count&& countChunk) {
         if (phaseSize_.size() < phases) growPhases(phases);  // only when the work grew
