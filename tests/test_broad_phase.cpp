@@ -164,12 +164,16 @@ private slots:
     void pairsStayExactThroughMovesDestroysAndCreates();
     void treeHeightStaysLogarithmic_data();
     void treeHeightStaysLogarithmic();
+    void rebuiltTreeStaysShallowOnWideningSpacing();
+    void batchedMovesEqualMovesOneByOne_data();
+    void batchedMovesEqualMovesOneByOne();
     void queryEqualsBruteForceOverlaps();
     void rayCastClosestHitEqualsBruteForce();
     void rayCastCallbackClipsAndStops();
     void inactiveAndSameBodyPairsAreFiltered();
     void fatBoxesEnlargeAndShrink();
     void removedProxiesLeaveNoTrace();
+    void steadyStateDoesNotAllocate_data();
     void steadyStateDoesNotAllocate();
 };
 
@@ -317,6 +321,7 @@ void TestBroadPhase::treeHeightStaysLogarithmic() {
     QFETCH(QString, layout);
     std::mt19937 rng(7u);
     DynamicAabbTree tree;
+    std::vector<DynamicAabbTree::ProxyMove> moves;
     const float half = worldHalfSize(static_cast<std::size_t>(count));
     const int side = static_cast<int>(std::ceil(std::cbrt(static_cast<float>(count))));
     std::vector<Proxy> mix;  // boxes so far, for coincident copies
@@ -335,14 +340,86 @@ void TestBroadPhase::treeHeightStaysLogarithmic() {
         } else {
             box = Aabb::fromCenterHalfExtents(Vec3(1.0f, 2.0f, 3.0f), Vec3(0.5f));
         }
-        tree.createProxy(box, static_cast<std::uint32_t>(i));
+        moves.push_back({tree.createProxy(box, static_cast<std::uint32_t>(i)), translated(box, Vec3(1.0f)), Vec3(0.0f)});
     }
-    verifyTree(tree);
     const int bound = heightBound(static_cast<std::size_t>(count), layout == "scene mix");
-    qDebug("height %d, bound %d, area ratio %.1f", tree.height(), bound, tree.areaRatio());
-    QVERIFY2(tree.height() <= bound, qPrintable(QString("height %1 > bound %2, area ratio %3")
-                                                    .arg(tree.height()).arg(bound).arg(tree.areaRatio())));
-    QCOMPARE(tree.nodeCount(), static_cast<std::size_t>(2 * count - 1));
+    const auto verifyHeight = [&](const char* built) {
+        verifyTree(tree);
+        qDebug("%s: height %d, bound %d, area ratio %.1f", built, tree.height(), bound, tree.areaRatio());
+        QVERIFY2(tree.height() <= bound, qPrintable(QString("%1: height %2 > bound %3, area ratio %4")
+                                                        .arg(built).arg(tree.height()).arg(bound).arg(tree.areaRatio())));
+        QCOMPARE(tree.nodeCount(), static_cast<std::size_t>(2 * count - 1));
+    };
+    verifyHeight("inserted");
+    tree.moveProxies(moves);  // every proxy leaves its fat box: the tree is built anew
+    verifyHeight("rebuilt");
+}
+
+// A rebuild splits each node's leaves at the middle of their centres; centres spaced ever wider
+// apart cut off one leaf a level, until the depth where the split falls back to the median.
+void TestBroadPhase::rebuiltTreeStaysShallowOnWideningSpacing() {
+    constexpr int kCount = 200;
+    DynamicAabbTree tree;
+    std::vector<DynamicAabbTree::ProxyMove> moves;
+    for (int i = 0; i < kCount; ++i) {
+        const Aabb box = Aabb::fromCenterHalfExtents(Vec3(std::pow(1.4f, static_cast<float>(i)), 0.0f, 0.0f), Vec3(0.5f));
+        moves.push_back({tree.createProxy(box, static_cast<std::uint32_t>(i)), translated(box, Vec3(0.0f, 1.0f, 0.0f)), Vec3(0.0f)});
+    }
+    tree.moveProxies(moves);
+    verifyTree(tree);
+    // 48 levels of single leaves cut off, then halves of the rest.
+    const int bound = 48 + static_cast<int>(std::ceil(std::log2(static_cast<double>(kCount)))) + 1;
+    QVERIFY2(tree.height() <= bound, qPrintable(QString("height %1 > %2").arg(tree.height()).arg(bound)));
+    int hits = 0;
+    tree.query(moves.back().tight, [&](ProxyId id) { hits += id == moves.back().id ? 1 : 0; });
+    QCOMPARE(hits, 1);
+}
+
+void TestBroadPhase::batchedMovesEqualMovesOneByOne_data() {
+    QTest::addColumn<double>("share");
+    QTest::addColumn<std::uint32_t>("seed");
+    // Below DynamicAabbTree::kSubtreeShare the batch reinserts its proxies, above it rebuilds.
+    for (const double share : {0.05, 0.5, 1.0})
+        for (const std::uint32_t seed : {1u, 2u}) QTest::addRow("share %.2f, seed %u", share, seed) << share << seed;
+}
+
+// The same proxies moved one by one and all at once: the same fat boxes, the same pairs (sorted,
+// whatever the tree's shape), a valid tree.
+void TestBroadPhase::batchedMovesEqualMovesOneByOne() {
+    QFETCH(double, share);
+    QFETCH(std::uint32_t, seed);
+    Scene oneByOne(1000, seed), batched(1000, seed);
+    std::mt19937 rng(seed + 100u);
+    std::vector<BodyPair> pairsOneByOne, pairsBatched, all;
+    oneByOne.broadPhase.updatePairs(pairsOneByOne);
+    batched.broadPhase.updatePairs(pairsBatched);
+    std::vector<DynamicAabbTree::ProxyMove> moves;
+    for (int round = 0; round < 10; ++round) {
+        moves.clear();
+        for (std::size_t i = 0; i < oneByOne.proxies.size(); ++i) {
+            if (uniform(rng, 0.0f, 1.0f) >= share) continue;
+            const bool teleport = uniform(rng, 0.0f, 1.0f) < 0.3f;
+            const Vec3 displacement = uniformVec(rng, -0.5f, 0.5f);
+            const Vec3 offset = teleport ? uniformVec(rng, -oneByOne.half, oneByOne.half) - oneByOne.proxies[i].tight.center()
+                                         : displacement;
+            for (Scene* scene : {&oneByOne, &batched}) scene->proxies[i].tight = translated(scene->proxies[i].tight, offset);
+            oneByOne.broadPhase.moveProxy(oneByOne.proxies[i].id, oneByOne.proxies[i].tight, displacement);
+            moves.push_back({batched.proxies[i].id, batched.proxies[i].tight, displacement});
+        }
+        batched.broadPhase.moveProxies(moves);
+        for (std::size_t i = 0; i < oneByOne.proxies.size(); ++i) {
+            const Aabb& expected = oneByOne.broadPhase.fatBounds(oneByOne.proxies[i].id);
+            const Aabb& actual = batched.broadPhase.fatBounds(batched.proxies[i].id);
+            QVERIFY(expected.min == actual.min && expected.max == actual.max);
+        }
+        oneByOne.broadPhase.updatePairs(pairsOneByOne);
+        batched.broadPhase.updatePairs(pairsBatched);
+        QVERIFY(pairsBatched == pairsOneByOne);
+        batched.broadPhase.findAllPairs(all);
+        QVERIFY(all == bruteForcePairs(batched.broadPhase, batched.proxies));
+        verifyTree(batched.broadPhase.tree());
+        QVERIFY(batched.broadPhase.tree().height() <= heightBound(batched.proxies.size(), true));
+    }
 }
 
 void TestBroadPhase::queryEqualsBruteForceOverlaps() {
@@ -533,9 +610,16 @@ void TestBroadPhase::removedProxiesLeaveNoTrace() {
     QVERIFY(pairs.empty());
 }
 
+void TestBroadPhase::steadyStateDoesNotAllocate_data() {
+    QTest::addColumn<bool>("batched");
+    QTest::addRow("one by one") << false;
+    QTest::addRow("all at once") << true;  // most steps rebuild the tree
+}
+
 // After warm-up (pools, move buffer and pair vector at their working sizes), moving 1000 boxes and
 // updating pairs, plus queries and ray casts, must not touch the heap.
 void TestBroadPhase::steadyStateDoesNotAllocate() {
+    QFETCH(bool, batched);
     Scene scene(1000, 99u);
     BroadPhase& bp = scene.broadPhase;
     std::vector<BodyPair> pairs;
@@ -544,6 +628,8 @@ void TestBroadPhase::steadyStateDoesNotAllocate() {
     for (Vec3& v : velocity) v = uniformVec(scene.rng, -1.0f, 1.0f);
 
     std::size_t reinserted = 0;
+    std::vector<DynamicAabbTree::ProxyMove> moves;
+    moves.reserve(scene.proxies.size());
     const auto step = [&](int stepIndex) {
         const float dt = 1.0f / 60.0f;
         for (std::size_t i = 0; i < scene.proxies.size(); ++i) {
@@ -560,7 +646,15 @@ void TestBroadPhase::steadyStateDoesNotAllocate() {
             if (i % 97 == static_cast<std::size_t>(stepIndex % 97)) {
                 p.tight = translated(p.tight, uniformVec(scene.rng, -scene.half, scene.half) - p.tight.center());
             }
-            reinserted += bp.moveProxy(p.id, p.tight, displacement) ? 1 : 0;
+            if (batched)
+                moves.push_back({p.id, p.tight, displacement});
+            else
+                reinserted += bp.moveProxy(p.id, p.tight, displacement) ? 1 : 0;
+        }
+        if (batched) {
+            bp.moveProxies(moves);
+            reinserted += moves.size();
+            moves.clear();
         }
         bp.updatePairs(pairs);
         bp.findAllPairs(all);

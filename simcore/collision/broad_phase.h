@@ -41,6 +41,9 @@ public:
     void removeProxy(ProxyId id);
     // Returns true when the fat box changed (the proxy then counts as moved).
     bool moveProxy(ProxyId id, const Aabb& tight, const Vec3& displacement);
+    // moveProxy for many proxies at once (DynamicAabbTree::moveProxies); keeps in `moves` those
+    // whose fat box changed.
+    void moveProxies(std::vector<DynamicAabbTree::ProxyMove>& moves);
     // Activating a proxy counts as a move, so a body that wakes up gets its pairs reported again.
     void setActive(ProxyId id, bool active);
     bool isActive(ProxyId id) const { return (flags_[id] & kActive) != 0; }

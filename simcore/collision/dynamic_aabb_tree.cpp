@@ -1,5 +1,6 @@
 #include "simcore/collision/dynamic_aabb_tree.h"
 
+#include <algorithm>
 #include <limits>
 #include <utility>
 
@@ -72,21 +73,76 @@ void DynamicAabbTree::destroyProxy(ProxyId id) {
     --proxyCount_;
 }
 
-bool DynamicAabbTree::moveProxy(ProxyId id, const Aabb& tight, const Vec3& displacement) {
+bool DynamicAabbTree::leavesFatBox(ProxyId id, const Aabb& tight, const Vec3& displacement) const {
     assert(isProxy(id));
     assert(!tight.isEmpty() && isFinite(tight.min) && isFinite(tight.max));
-    const Aabb fresh = enlarge(tight, displacement);
     const Aabb& current = nodes_[id].box;
     // The fat box must hold where the body is going too, or a body fast enough to cross another
     // in one step would never be paired with it.
     const Aabb swept{glm::min(tight.min, tight.min + displacement), glm::max(tight.max, tight.max + displacement)};
-    if (current.contains(swept) && current.surfaceArea() <= settings_.shrinkAreaRatio * fresh.surfaceArea()) {
-        return false;
-    }
+    return !current.contains(swept) ||
+           current.surfaceArea() > settings_.shrinkAreaRatio * enlarge(tight, displacement).surfaceArea();
+}
+
+bool DynamicAabbTree::moveProxy(ProxyId id, const Aabb& tight, const Vec3& displacement) {
+    if (!leavesFatBox(id, tight, displacement)) return false;
     removeLeaf(id);
-    nodes_[id].box = fresh;
+    nodes_[id].box = enlarge(tight, displacement);
     insertLeaf(id);
     return true;
+}
+
+void DynamicAabbTree::moveProxies(const std::vector<ProxyMove>& moves) {
+    const bool asOneSubtree = static_cast<float>(moves.size()) >= kSubtreeShare * static_cast<float>(proxyCount_);
+    buildItems_.clear();
+    for (const ProxyMove& move : moves) {
+        removeLeaf(move.id);
+        Node& leaf = nodes_[move.id];
+        leaf.box = enlarge(move.tight, move.displacement);
+        if (asOneSubtree)
+            buildItems_.push_back({leaf.box.min + leaf.box.max, move.id});
+        else
+            insertLeaf(move.id);
+    }
+    if (asOneSubtree && !buildItems_.empty())
+        insertLeaf(buildSubtree(buildItems_.data(), buildItems_.data() + buildItems_.size(), 0));
+}
+
+// Returns the subtree's root. Its leaves are the items' (reordered).
+std::uint32_t DynamicAabbTree::buildSubtree(BuildItem* first, BuildItem* last, int depth) {
+    const std::ptrdiff_t count = last - first;
+    if (count == 1) return first->leaf;
+    Aabb centres{first->centre, first->centre};
+    for (const BuildItem* item = first + 1; item != last; ++item) {
+        centres.min = glm::min(centres.min, item->centre);
+        centres.max = glm::max(centres.max, item->centre);
+    }
+    const Vec3 spread = centres.max - centres.min;
+    const int axis = spread.x >= spread.y && spread.x >= spread.z ? 0 : (spread.y >= spread.z ? 1 : 2);
+    // Split at the middle of the centres' widest extent. Past this depth (leaves spaced ever wider
+    // apart, each split cutting off one), split at the median instead: the height stays
+    // logarithmic on any input.
+    constexpr int kMaxMidpointDepth = 48;
+    BuildItem* middle = first + count / 2;
+    if (depth < kMaxMidpointDepth) {
+        const float midpoint = 0.5f * (centres.min[axis] + centres.max[axis]);
+        BuildItem* const split = std::partition(
+            first, last, [axis, midpoint](const BuildItem& item) { return item.centre[axis] < midpoint; });
+        if (split != first && split != last) middle = split;  // else the centres (nearly) coincide
+    } else {
+        std::nth_element(first, middle, last,
+                         [axis](const BuildItem& a, const BuildItem& b) { return a.centre[axis] < b.centre[axis]; });
+    }
+    const std::uint32_t child1 = buildSubtree(first, middle, depth + 1);
+    const std::uint32_t child2 = buildSubtree(middle, last, depth + 1);
+    const std::uint32_t index = allocateNode();
+    Node& node = nodes_[index];
+    node.child1 = child1;
+    node.child2 = child2;
+    node.box = unionOf(nodes_[child1].box, nodes_[child2].box);
+    node.height = 1 + std::max(nodes_[child1].height, nodes_[child2].height);
+    nodes_[child1].parent = nodes_[child2].parent = index;
+    return index;
 }
 
 // Choosing the sibling S for a new leaf costs, in SAH terms, the area of the new parent,

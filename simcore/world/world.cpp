@@ -369,14 +369,16 @@ std::size_t World::updateBroadPhase(float dt) {
     // Bodies per chunk of the bounds update: each costs tens of nanoseconds (a hull's, more).
     constexpr std::size_t kBoundsGrain = 256;
     const auto moves = [this](std::size_t i) { return bodies_.motion[i] != MotionType::Static && bodies_.awake[i]; };
-    // Each body's bounds from its own pose: in parallel. The tree is shared: its updates in body
-    // order, then its queries for the moved proxies' pairs in parallel again.
+    // Each body's bounds from its own pose: in parallel. The tree is shared: its updates at once,
+    // then its queries for the moved proxies' pairs in parallel again.
     threads_.pool().parallelFor(bodies_.size(), kBoundsGrain, [&](std::size_t, std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i)
             if (moves(i)) bodies_.bounds[i] = worldBounds(bodies_.shape[i], bodies_.transform(i));
     });
+    proxyMoves_.clear();
     for (std::size_t i = 0; i < bodies_.size(); ++i)
-        if (moves(i)) broadPhase_.moveProxy(bodies_.proxy[i], bodies_.bounds[i], dt * bodies_.linearVelocity[i]);
+        if (moves(i)) proxyMoves_.push_back({bodies_.proxy[i], bodies_.bounds[i], dt * bodies_.linearVelocity[i]});
+    broadPhase_.moveProxies(proxyMoves_);
     broadPhase_.updatePairs(newPairs_, threads_.pool());
     // Jointed bodies do not collide unless their joint asks for it (collideConnected).
     if (jointFilteredPairs_.size() > 0) {
