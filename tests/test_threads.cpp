@@ -114,6 +114,7 @@ private slots:
     void tunerChargesTheStepAfterAProbeToTheProbe();
     void tunerSwitchesWhenTheOtherWayGetsFaster();
     void tunerProbesSoonWhenAStageGrows();
+    void tunerJudgesByTimePerUnitOfWork();
     void tunerResumesWithoutChargingAProbe();
     void worldThreadsFallBackWhenStageChoicesAddUpToASlowerStep();
     void worldThreadsUseWorkersSoonWhenEveryStageGains();
@@ -528,6 +529,31 @@ void TestThreads::tunerProbesSoonWhenAStageGrows() {
     verifyWorkersButForProbes(std::vector<bool>(ways.begin() + 304, ways.end()));
 }
 
+// mixed1k's solver as its bodies land does 1000 to 4900 batches a step, more or fewer from one step
+// to the next as impacts come and go. Here two light steps (1000 batches) follow two heavy ones
+// (3000), and workers take 0.2 us a batch where inline takes 0.3: by time alone, a probe over two
+// heavy steps loses against two light ones and one over two light steps wins against two heavy,
+// and the choice goes back and forth; by time per batch workers win every probe.
+void TestThreads::tunerJudgesByTimePerUnitOfWork() {
+    const auto batches = [](int step) { return step / 2 % 2 ? 3000.0 : 1000.0; };
+    for (const bool givenWork : {true, false}) {
+        WorkerTuner<1> tuner;
+        std::vector<bool> ways;
+        for (int step = 0; step < 400; ++step) {
+            const bool withWorkers = tuner.useWorkers(0);
+            ways.push_back(withWorkers);
+            const double ms = 0.001 * batches(step) * (withWorkers ? 0.2 : 0.3);
+            if (givenWork)
+                tuner.record(0, ms, batches(step));
+            else
+                tuner.record(0, ms);
+        }
+        qDebug("judged by time%s: %d of 400 steps inline", givenWork ? " per batch" : "",
+               static_cast<int>(std::count(ways.begin(), ways.end(), false)));
+        if (givenWork) verifyWorkersButForProbes(std::vector<bool>(ways.begin() + 6, ways.end()));
+    }
+}
+
 void TestThreads::tunerResumesWithoutChargingAProbe() {
     // A world's stages are timed only in steps that use workers. mixed1k's prepare and solver learnt
     // inline at 0.07 ms a step while the boxes fell, the step then ran inline for 47 steps, and when
@@ -565,7 +591,7 @@ MadeUpStep stepStages(WorldThreads& threads, std::initializer_list<Stage> stages
         profile.stageMs[s] = stageMs(stage, withWorkers);
         step.ms += profile.stageMs[s];
     }
-    threads.learn(profile);
+    threads.learn(profile, 1.0);
     return step;
 }
 

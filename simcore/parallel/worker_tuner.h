@@ -10,9 +10,9 @@
 // fixed rule (a grain, a minimum size) right for one is wrong for the other; a measurement is
 // right for both.
 //
-// How: each stage keeps an estimate of its time per step with and without workers (the faster of
-// the last two steps that ran it that way: for the way it runs, the latest; for the other, its
-// latest probe), runs the way that is faster, and now and then tries the other (a probe) for two
+// How: each stage keeps an estimate of its time per unit of work with and without workers (the
+// faster of the last two steps that ran it that way: for the way it runs, the latest; for the
+// other, its latest probe), runs the way that is faster, and now and then tries the other (a probe) for two
 // steps. A step that runs a stage the other way than the step before moves the stage's data to the
 // cores that way keeps it on, and the host's preemptions (one step in a few hundred took 40-80 us
 // longer, a tower of 40's whole step) only add time too: so two steps one way are judged by the
@@ -71,17 +71,26 @@ public:
     // Whether useWorkers(stage) is not the settled choice this step: learning, or a probe.
     bool exploring(std::size_t stage) const { return learning(stage) || states_[stage].probeDue(); }
 
-    // The stage's time in a step that ran it as useWorkers said.
-    void record(std::size_t stage, double ms) {
+    // The stage's time in a step that ran it as useWorkers said, and the work it did there in any
+    // unit proportional to its time on one thread (1 where the stage has none): ways are compared
+    // by time per unit of work. A stage whose work changes from step to step is judged unfairly by
+    // its time alone: mixed1k's solver did 1000 to 4900 batches a step as its bodies landed, taking
+    // 0.19-0.44 us a batch inline and 0.13-0.33 with workers, and a probe of workers judged by time
+    // lost against the lighter step before it in 3 runs of 6, leaving the solver inline through
+    // the landing. Judged by time per batch, mixed1k at 2 threads took 0.098 ms a step against
+    // 0.109 (medians of 10 alternating runs, 2026-12-07).
+    void record(std::size_t stage, double ms, double work = 1.0) {
         StageState& state = states_[stage];
         const int way = useWorkers(stage) ? kWorkers : kInline;
         const bool probing = state.learnt() && state.probeDue();
-        const double previousMs = std::exchange(state.previousMs, ms);
+        const double rate = ms / std::max(work, kMinWork);  // ms per unit of work
+        const double previousRate = std::exchange(state.previousRate, rate);
         const bool afterProbe = std::exchange(state.lastStepProbed, probing);
+        const auto chosen = [&state] { return state.workersChosen ? kWorkers : kInline; };
         if (way != state.lastWay) {  // the step moved the stage's data: not this way's time
             state.lastWay = way;
             if (!state.learnt()) return;  // learning: the next step is learnt from
-            const double excessMs = std::max(0.0, ms - state.estimateMs[state.workersChosen ? kWorkers : kInline]);
+            const double excessMs = std::max(0.0, ms - state.estimateRate[chosen()] * work);
             if (probing)
                 state.probeMoveMs = excessMs;  // the probe's first step; it goes on
             else if (afterProbe)
@@ -97,29 +106,30 @@ public:
         // more: in pile1k the step grew from 0.35 to 2 ms in 13 steps as the boxes landed, and a
         // probe of workers judged against the inline steps' average, which lagged, lost in 2 runs
         // of 4 and left 17 steps inline (2026-12-07).
-        const double wayMs = std::min(ms, previousMs);
+        const double wayRate = std::min(rate, previousRate);
         if (!state.learnt()) {
-            learn(state, way, wayMs);
+            learn(state, way, wayRate, work);
             return;
         }
-        state.estimateMs[way] = wayMs;
+        state.estimateRate[way] = wayRate;
         if (probing) {
-            const int chosen = state.workersChosen ? kWorkers : kInline;
-            if (state.estimateMs[way] < kSwitchRatio * state.estimateMs[chosen]) {
+            if (state.estimateRate[way] < kSwitchRatio * state.estimateRate[chosen()]) {
                 state.workersChosen = way == kWorkers;
                 state.probeInterval = kMinProbeInterval;
                 state.msToProbe = 0.0;
             } else {
                 state.probeInterval = std::min(2 * state.probeInterval, kMaxProbeInterval);
-                const double lossMs = state.probeMoveMs + std::max(0.0, state.estimateMs[way] - state.estimateMs[chosen]);
+                const double lossMs =
+                    state.probeMoveMs + std::max(0.0, state.estimateRate[way] - state.estimateRate[chosen()]) * work;
                 state.msToProbe = lossMs / kProbeCostShare;
             }
             state.stepsToProbe = state.probeInterval;
-            state.decidedMs = state.estimateMs[state.workersChosen ? kWorkers : kInline];
+            state.decidedMs = state.estimateRate[chosen()] * work;
         } else {
             // Chosen while it was another size of job: pile1k's solve took 0.03 ms a step when the
             // first boxes landed, when inline was right, and 1 ms twenty steps later, and stayed
             // inline for the rest of the scene in 2 runs of 5 (2026-12-07).
+            const double wayMs = wayRate * work;
             if (wayMs > kRejudgeFactor * state.decidedMs || kRejudgeFactor * wayMs < state.decidedMs) {
                 state.decidedMs = wayMs;
                 state.stepsToProbe = 0;
@@ -133,32 +143,34 @@ private:
     static constexpr int kInline = 0, kWorkers = 1;
     static constexpr int kNone = -1;
     static constexpr int kLearningMeasurements = 3;  // first way, other way, first way again
+    static constexpr double kMinWork = 1e-9;
     struct StageState {
-        double estimateMs[2] = {-1.0, -1.0};  // by way; negative: not measured yet
-        int measurements = 0;                 // learning steps measured, up to kLearningMeasurements
+        double estimateRate[2] = {-1.0, -1.0};  // ms per unit of work, by way; negative: not measured yet
+        int measurements = 0;                   // learning steps measured, up to kLearningMeasurements
         bool workersChosen = false;
         int probeInterval = kMinProbeInterval;
         int stepsToProbe = 0;          // steps the choice runs before the next probe
         double msToProbe = 0.0;        // and its time (ms) before it, after a probe that lost
         double probeMoveMs = 0.0;      // the probe's first step over the chosen way's estimate
-        double previousMs = 0.0;       // the last step's time
-        double decidedMs = 0.0;        // the chosen way's time when it was chosen (or confirmed)
+        double previousRate = 0.0;     // the last step's time per unit of work
+        double decidedMs = 0.0;        // the stage's time in the step its choice was made (or confirmed)
         bool lastStepProbed = false;   // whether the last step was a probe's
         int lastWay = kNone;           // the way the last step ran
         bool learnt() const { return measurements == kLearningMeasurements; }
         bool probeDue() const { return stepsToProbe == 0 && msToProbe <= 0.0; }
     };
-    static void learn(StageState& state, int way, double ms) {
-        double& estimate = state.estimateMs[way];
-        estimate = estimate < 0.0 ? ms : 0.5 * (estimate + ms);
+    static void learn(StageState& state, int way, double rate, double work) {
+        double& estimate = state.estimateRate[way];
+        estimate = estimate < 0.0 ? rate : 0.5 * (estimate + rate);
         if (++state.measurements < kLearningMeasurements) return;
         // The faster to start. The first probe waits as after one that lost what the slower way's
         // two steps did: pyramid20 at 2 threads lost 10 ms in a probe 8 steps after learning, 8% of
         // the benchmark's 120 steps.
-        state.workersChosen = state.estimateMs[kWorkers] < state.estimateMs[kInline];
-        state.decidedMs = state.estimateMs[state.workersChosen ? kWorkers : kInline];
+        state.workersChosen = state.estimateRate[kWorkers] < state.estimateRate[kInline];
+        state.decidedMs = state.estimateRate[state.workersChosen ? kWorkers : kInline] * work;
         state.stepsToProbe = state.probeInterval;
-        state.msToProbe = 2.0 * std::abs(state.estimateMs[kWorkers] - state.estimateMs[kInline]) / kProbeCostShare;
+        state.msToProbe =
+            2.0 * std::abs(state.estimateRate[kWorkers] - state.estimateRate[kInline]) * work / kProbeCostShare;
     }
     int first_ = kInline;  // or kWorkers
     std::array<StageState, Stages> states_{};

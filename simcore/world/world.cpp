@@ -174,7 +174,7 @@ void World::step() {
     run(Stage::Sleep, [&] { sleepRestingIslands(plan); });
 
     finishStep(plan, profile);
-    threads_.learn(profile);
+    threads_.learn(profile, solverWork(plan));
     profile.totalMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - stepStart).count();
     lastProfile_ = profile;
 }
@@ -261,6 +261,13 @@ void World::prepareConstraints(const StepPlan& plan) {
     if (plan.joints) jointSolver_.prepare(joints_, bodies_, {plan.substepDt, settings_.joint});
     // The poses continuous collision sweeps from (it runs only with contacts, so only with this stage).
     if (plan.continuous) recordSweepStarts();
+}
+
+// The work of the solver's stages in the step (WorkerTuner::record): contact batches and joints,
+// prepared and solved, and one for what the stages do whatever they hold.
+double World::solverWork(const StepPlan& plan) const {
+    return static_cast<double>(1 + (plan.solveContacts ? contactSolver_.batchWork() : 0) +
+                               (plan.solveJoints ? jointSolver_.constraintWork() : 0));
 }
 
 // In each pass joints go first and contacts have the last word (Box2D v3's order): penetration

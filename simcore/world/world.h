@@ -110,7 +110,8 @@ public:
     // learnt in a probe of the step tuner's measured that probe, and stages that had learnt inline
     // in one made every later probe lose (pyramid10 at 2 threads: 3 runs in 8 kept 1.03-1.15 ms a
     // step instead of 0.74-0.84, 2026-12-07).
-    void learn(const StepProfile& profile) {
+    // solverWork: the contact solver's batchWork() in the step, the work of the solver's stages.
+    void learn(const StepProfile& profile, double solverWork) {
         TaskPool& workers = pool();
         if (workers.threadCount() > 1) {
             const bool stagesLearn = stepTuner_.learning(0) || (stepUsesWorkers() && !stepTuner_.exploring(0));
@@ -126,7 +127,7 @@ public:
             }
             if (stagesLearn)
                 for (std::size_t t = 0; t < kStageCount; ++t)
-                    if (tunedRan[t]) stageTuner_.record(t, tunedMs[t]);
+                    if (tunedRan[t]) stageTuner_.record(t, tunedMs[t], t == tunerIndex(Stage::Solve) ? solverWork : 1.0);
             stepTuner_.record(0, stepMs);
         }
         workers.setWorkersEnabled(true);
@@ -351,6 +352,7 @@ private:
     // The stages of step() that are more than one call, in order.
     void prepareConstraints(const StepPlan& plan);
     void warmStart(const StepPlan& plan);
+    double solverWork(const StepPlan& plan) const;
     void solveVelocities(const StepPlan& plan);
     void relaxConstraints(const StepPlan& plan);
     void storeImpulses(const StepPlan& plan, StepCounters& counters);
