@@ -15,6 +15,7 @@
 #include "simcore/world/profiler.h"
 #include "simcore/world_settings.h"
 
+#include <algorithm>
 #include <array>
 #include <memory>
 #include <optional>
@@ -125,10 +126,12 @@ public:
                 tunedMs[tuned] += profile.stageMs[s];
                 tunedRan[tuned] = true;
             }
+            // A step in which no stage ran (everything asleep) says nothing about either way.
+            const bool anyRan = std::find(tunedRan.begin(), tunedRan.end(), true) != tunedRan.end();
             if (stagesLearn)
                 for (std::size_t t = 0; t < kStageCount; ++t)
                     if (tunedRan[t]) stageTuner_.record(t, tunedMs[t], t == tunerIndex(Stage::Solve) ? solverWork : 1.0);
-            stepTuner_.record(0, stepMs);
+            if (anyRan) stepTuner_.record(0, stepMs);
         }
         workers.setWorkersEnabled(true);
     }
