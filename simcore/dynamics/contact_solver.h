@@ -304,11 +304,12 @@ private:
     // whose bodies and records stay in its cache: handed over between cores that share no cache,
     // they cost pyramid20 5-7% of its step at 2 threads. At 1 thread visiting neighbouring
     // manifolds of all colours together saved 2-4%. Filling and storing a batch do not depend on
-    // the order, so the slices may follow the thread count.
+    // the order, so the slices may follow the threads that run them (one, while the workers are
+    // off: as at 1 thread).
     template <class Visit>
     void forEachColorSlice(Visit&& visit) const {
         const std::size_t slices = std::clamp<std::size_t>(batches_.size() / kMinBatchesPerSlice, 1,
-                                                           kSlicesPerThread * static_cast<std::size_t>(pool_->threadCount()));
+                                                           kSlicesPerThread * static_cast<std::size_t>(pool_->activeThreadCount()));
         pool_->parallelFor(slices, 1, [&](std::size_t slice, std::size_t, std::size_t) {
             for (int color = 0; color <= kOverflow; ++color) {
                 const std::size_t first = colorFirstBatch_[color], count = colorFirstBatch_[color + 1] - first;

@@ -35,6 +35,8 @@ public:
     TaskPool& operator=(const TaskPool&) = delete;
 
     int threadCount() const { return static_cast<int>(workers_.size()) + 1; }
+    // The threads a parallelFor runs on now: 1 while the workers are off.
+    int activeThreadCount() const { return workersEnabled_ ? threadCount() : 1; }
 
     // Off: parallelFor runs every chunk on the calling thread, in chunk order, as with one thread
     // (the same chunks, so the same results). For work the workers would only slow down.
