@@ -406,7 +406,9 @@ void TestBroadPhase::batchedMovesEqualMovesOneByOne() {
             oneByOne.broadPhase.moveProxy(oneByOne.proxies[i].id, oneByOne.proxies[i].tight, displacement);
             moves.push_back({batched.proxies[i].id, batched.proxies[i].tight, displacement});
         }
-        batched.broadPhase.moveProxies(moves);
+        batched.broadPhase.moveProxies(moves);  // keeps the moves that changed a fat box
+        std::set<ProxyId> moved;
+        for (const DynamicAabbTree::ProxyMove& move : moves) moved.insert(move.id);
         for (std::size_t i = 0; i < oneByOne.proxies.size(); ++i) {
             const Aabb& expected = oneByOne.broadPhase.fatBounds(oneByOne.proxies[i].id);
             const Aabb& actual = batched.broadPhase.fatBounds(batched.proxies[i].id);
@@ -415,6 +417,10 @@ void TestBroadPhase::batchedMovesEqualMovesOneByOne() {
         oneByOne.broadPhase.updatePairs(pairsOneByOne);
         batched.broadPhase.updatePairs(pairsBatched);
         QVERIFY(pairsBatched == pairsOneByOne);
+        // Exactly the pairs of the proxies whose fat boxes changed, whether moved one by one or in
+        // a subtree of their own.
+        QVERIFY(pairsBatched == bruteForcePairs(batched.broadPhase, batched.proxies,
+                                                [&](const Proxy& p) { return moved.count(p.id) > 0; }));
         batched.broadPhase.findAllPairs(all);
         QVERIFY(all == bruteForcePairs(batched.broadPhase, batched.proxies));
         verifyTree(batched.broadPhase.tree());
