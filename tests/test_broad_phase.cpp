@@ -340,14 +340,18 @@ void TestBroadPhase::treeHeightStaysLogarithmic() {
         } else {
             box = Aabb::fromCenterHalfExtents(Vec3(1.0f, 2.0f, 3.0f), Vec3(0.5f));
         }
-        moves.push_back({tree.createProxy(box, static_cast<std::uint32_t>(i)), translated(box, Vec3(1.0f)), Vec3(0.0f)});
+        moves.push_back(
+            {tree.createProxy(box, static_cast<std::uint32_t>(i)), translated(box, Vec3(1.0f)), Vec3(0.0f)});
     }
     const int bound = heightBound(static_cast<std::size_t>(count), layout == "scene mix");
     const auto verifyHeight = [&](const char* built) {
         verifyTree(tree);
         qDebug("%s: height %d, bound %d, area ratio %.1f", built, tree.height(), bound, tree.areaRatio());
         QVERIFY2(tree.height() <= bound, qPrintable(QString("%1: height %2 > bound %3, area ratio %4")
-                                                        .arg(built).arg(tree.height()).arg(bound).arg(tree.areaRatio())));
+                                                        .arg(built)
+                                                        .arg(tree.height())
+                                                        .arg(bound)
+                                                        .arg(tree.areaRatio())));
         QCOMPARE(tree.nodeCount(), static_cast<std::size_t>(2 * count - 1));
     };
     verifyHeight("inserted");
@@ -362,8 +366,10 @@ void TestBroadPhase::rebuiltTreeStaysShallowOnWideningSpacing() {
     DynamicAabbTree tree;
     std::vector<DynamicAabbTree::ProxyMove> moves;
     for (int i = 0; i < kCount; ++i) {
-        const Aabb box = Aabb::fromCenterHalfExtents(Vec3(std::pow(1.4f, static_cast<float>(i)), 0.0f, 0.0f), Vec3(0.5f));
-        moves.push_back({tree.createProxy(box, static_cast<std::uint32_t>(i)), translated(box, Vec3(0.0f, 1.0f, 0.0f)), Vec3(0.0f)});
+        const Aabb box =
+            Aabb::fromCenterHalfExtents(Vec3(std::pow(1.4f, static_cast<float>(i)), 0.0f, 0.0f), Vec3(0.5f));
+        moves.push_back({tree.createProxy(box, static_cast<std::uint32_t>(i)), translated(box, Vec3(0.0f, 1.0f, 0.0f)),
+                         Vec3(0.0f)});
     }
     tree.moveProxies(moves);
     verifyTree(tree);
@@ -400,9 +406,11 @@ void TestBroadPhase::batchedMovesEqualMovesOneByOne() {
             if (uniform(rng, 0.0f, 1.0f) >= share) continue;
             const bool teleport = uniform(rng, 0.0f, 1.0f) < 0.3f;
             const Vec3 displacement = uniformVec(rng, -0.5f, 0.5f);
-            const Vec3 offset = teleport ? uniformVec(rng, -oneByOne.half, oneByOne.half) - oneByOne.proxies[i].tight.center()
-                                         : displacement;
-            for (Scene* scene : {&oneByOne, &batched}) scene->proxies[i].tight = translated(scene->proxies[i].tight, offset);
+            const Vec3 offset =
+                teleport ? uniformVec(rng, -oneByOne.half, oneByOne.half) - oneByOne.proxies[i].tight.center()
+                         : displacement;
+            for (Scene* scene : {&oneByOne, &batched})
+                scene->proxies[i].tight = translated(scene->proxies[i].tight, offset);
             oneByOne.broadPhase.moveProxy(oneByOne.proxies[i].id, oneByOne.proxies[i].tight, displacement);
             moves.push_back({batched.proxies[i].id, batched.proxies[i].tight, displacement});
         }
@@ -652,10 +660,8 @@ void TestBroadPhase::steadyStateDoesNotAllocate() {
             if (i % 97 == static_cast<std::size_t>(stepIndex % 97)) {
                 p.tight = translated(p.tight, uniformVec(scene.rng, -scene.half, scene.half) - p.tight.center());
             }
-            if (batched)
-                moves.push_back({p.id, p.tight, displacement});
-            else
-                reinserted += bp.moveProxy(p.id, p.tight, displacement) ? 1 : 0;
+            if (batched) moves.push_back({p.id, p.tight, displacement});
+            else reinserted += bp.moveProxy(p.id, p.tight, displacement) ? 1 : 0;
         }
         if (batched) {
             bp.moveProxies(moves);

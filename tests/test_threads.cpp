@@ -543,10 +543,8 @@ void TestThreads::tunerJudgesByTimePerUnitOfWork() {
             const bool withWorkers = tuner.useWorkers(0);
             ways.push_back(withWorkers);
             const double ms = 0.001 * batches(step) * (withWorkers ? 0.2 : 0.3);
-            if (givenWork)
-                tuner.record(0, ms, batches(step));
-            else
-                tuner.record(0, ms);
+            if (givenWork) tuner.record(0, ms, batches(step));
+            else tuner.record(0, ms);
         }
         qDebug("judged by time%s: %d of 400 steps inline", givenWork ? " per batch" : "",
                static_cast<int>(std::count(ways.begin(), ways.end(), false)));

@@ -99,10 +99,8 @@ void DynamicAabbTree::moveProxies(const std::vector<ProxyMove>& moves) {
         removeLeaf(move.id);
         Node& leaf = nodes_[move.id];
         leaf.box = enlarge(move.tight, move.displacement);
-        if (asOneSubtree)
-            buildItems_.push_back({leaf.box.min + leaf.box.max, move.id});
-        else
-            insertLeaf(move.id);
+        if (asOneSubtree) buildItems_.push_back({leaf.box.min + leaf.box.max, move.id});
+        else insertLeaf(move.id);
     }
     if (asOneSubtree && !buildItems_.empty())
         insertLeaf(buildSubtree(buildItems_.data(), buildItems_.data() + buildItems_.size(), 0));

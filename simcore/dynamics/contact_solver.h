@@ -308,8 +308,9 @@ private:
     // off: as at 1 thread).
     template <class Visit>
     void forEachColorSlice(Visit&& visit) const {
-        const std::size_t slices = std::clamp<std::size_t>(batches_.size() / kMinBatchesPerSlice, 1,
-                                                           kSlicesPerThread * static_cast<std::size_t>(pool_->activeThreadCount()));
+        const std::size_t slices =
+            std::clamp<std::size_t>(batches_.size() / kMinBatchesPerSlice, 1,
+                                    kSlicesPerThread * static_cast<std::size_t>(pool_->activeThreadCount()));
         pool_->parallelFor(slices, 1, [&](std::size_t slice, std::size_t, std::size_t) {
             for (int color = 0; color <= kOverflow; ++color) {
                 const std::size_t first = colorFirstBatch_[color], count = colorFirstBatch_[color + 1] - first;

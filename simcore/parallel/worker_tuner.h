@@ -12,18 +12,18 @@
 //
 // How: each stage keeps an estimate of its time per unit of work with and without workers (the
 // faster of the last two steps that ran it that way: for the way it runs, the latest; for the
-// other, its latest probe), runs the way that is faster, and now and then tries the other (a probe) for two
-// steps. A step that runs a stage the other way than the step before moves the stage's data to the
-// cores that way keeps it on, and the host's preemptions (one step in a few hundred took 40-80 us
-// longer, a tower of 40's whole step) only add time too: so two steps one way are judged by the
-// faster, and the first step of a probe and the step after it count as the probe's cost. (Judged
-// by its first step, an inline probe paid for gathering onto one core what the workers had spread
-// over two: pyramid10 at 2 threads on cores that share no cache stepped at 1.75 ms with workers,
-// 1.9 ms in the probe, and kept the workers; 1 thread took 1.27 ms, 2026-12-06.) A probe that
-// confirms the choice doubles the time to the next one (up to kMaxProbeInterval steps, so a settled
-// choice costs almost nothing to check), and the next probe also waits until the chosen way has run
-// long enough for the probe's loss (or the learning's, before the first probe) to be at most
-// kProbeCostShare of that time: on a step of microseconds a probe that wakes the workers costs
+// other, its latest probe), runs the way that is faster, and now and then tries the other (a probe)
+// for two steps. A step that runs a stage the other way than the step before moves the stage's data
+// to the cores that way keeps it on, and the host's preemptions (one step in a few hundred took
+// 40-80 us longer, a tower of 40's whole step) only add time too: so two steps one way are judged
+// by the faster, and the first step of a probe and the step after it count as the probe's cost.
+// (Judged by its first step, an inline probe paid for gathering onto one core what the workers had
+// spread over two: pyramid10 at 2 threads on cores that share no cache stepped at 1.75 ms with
+// workers, 1.9 ms in the probe, and kept the workers; 1 thread took 1.27 ms, 2026-12-06.) A probe
+// that confirms the choice doubles the time to the next one (up to kMaxProbeInterval steps, so a
+// settled choice costs almost nothing to check), and the next probe also waits until the chosen way
+// has run long enough for the probe's loss (or the learning's, before the first probe) to be at
+// most kProbeCostShare of that time: on a step of microseconds a probe that wakes the workers costs
 // several steps (a tower of 40 stepped 0.92x as fast on 2 threads as on 1, 2026-12-06). A probe
 // that wins switches and starts probing often again, as a scene that grows or falls asleep can
 // change the answer.
@@ -143,7 +143,7 @@ private:
     static constexpr int kInline = 0, kWorkers = 1;
     static constexpr int kNone = -1;
     static constexpr int kLearningMeasurements = 3;  // first way, other way, first way again
-    static constexpr double kMinWork = 1e-9;
+    static constexpr double kMinWork = 1e-9;         // what a stage that reports no work is taken to do
     struct StageState {
         double estimateRate[2] = {-1.0, -1.0};  // ms per unit of work, by way; negative: not measured yet
         int measurements = 0;                   // learning steps measured, up to kLearningMeasurements
@@ -153,7 +153,7 @@ private:
         double msToProbe = 0.0;        // and its time (ms) before it, after a probe that lost
         double probeMoveMs = 0.0;      // the probe's first step over the chosen way's estimate
         double previousRate = 0.0;     // the last step's time per unit of work
-        double decidedMs = 0.0;        // the stage's time in the step its choice was made (or confirmed)
+        double decidedMs = 0.0;        // the chosen way's time when it was chosen (or confirmed)
         bool lastStepProbed = false;   // whether the last step was a probe's
         int lastWay = kNone;           // the way the last step ran
         bool learnt() const { return measurements == kLearningMeasurements; }

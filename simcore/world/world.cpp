@@ -426,8 +426,8 @@ bool World::sweepFastBodies() {
     constexpr std::size_t kCheckGrain = 512;  // bodies per chunk of finding the fast ones: ~10 ns each
     const float target = settings_.contact.linearSlop;
     const auto sweepOf = [this](std::size_t i) {
-        return Sweep{bodies_.localCenterOfMass[i], sweepStartCenter_[i], bodies_.centerOfMass[i], sweepStartRotation_[i],
-                     bodies_.orientation[i]};
+        return Sweep{bodies_.localCenterOfMass[i], sweepStartCenter_[i], bodies_.centerOfMass[i],
+                     sweepStartRotation_[i], bodies_.orientation[i]};
     };
     const auto thinOf = [](const Shape& shape) { return kFastFraction * minimumExtent(shape); };
     // Which bodies are fast reads each body alone: on the pool (most steps find none). The sweeps

@@ -130,7 +130,8 @@ public:
             const bool anyRan = std::find(tunedRan.begin(), tunedRan.end(), true) != tunedRan.end();
             if (stagesLearn)
                 for (std::size_t t = 0; t < kStageCount; ++t)
-                    if (tunedRan[t]) stageTuner_.record(t, tunedMs[t], t == tunerIndex(Stage::Solve) ? solverWork : 1.0);
+                    if (tunedRan[t])
+                        stageTuner_.record(t, tunedMs[t], t == tunerIndex(Stage::Solve) ? solverWork : 1.0);
             if (anyRan) stepTuner_.record(0, stepMs);
         }
         workers.setWorkersEnabled(true);
@@ -400,7 +401,7 @@ private:
     PairTable jointFilteredPairs_;    // body-slot pair -> how many joints keep the two from colliding
     std::vector<BodyPair> newPairs_;  // scratch, reused every step
     std::vector<DynamicAabbTree::ProxyMove> proxyMoves_;  // scratch: the awake bodies' new bounds
-    std::vector<std::uint8_t> fastBody_;     // scratch: by body, 1 where continuous collision sweeps it
+    std::vector<std::uint8_t> fastBody_;                  // scratch: by body, 1 where continuous collision sweeps it
     std::vector<Vec3> sweepStartCenter_;     // scratch: awake bodies' poses at the start of the step,
     std::vector<Quat> sweepStartRotation_;   // for continuous collision
     bool proxiesStale_ = false;       // bodies moved while the broad phase did not run
