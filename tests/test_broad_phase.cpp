@@ -412,9 +412,10 @@ void TestBroadPhase::batchedMovesEqualMovesOneByOne() {
             for (Scene* scene : {&oneByOne, &batched})
                 scene->proxies[i].tight = translated(scene->proxies[i].tight, offset);
             oneByOne.broadPhase.moveProxy(oneByOne.proxies[i].id, oneByOne.proxies[i].tight, displacement);
-            moves.push_back({batched.proxies[i].id, batched.proxies[i].tight, displacement});
+            if (batched.broadPhase.leavesFatBox(batched.proxies[i].id, batched.proxies[i].tight, displacement))
+                moves.push_back({batched.proxies[i].id, batched.proxies[i].tight, displacement});
         }
-        batched.broadPhase.moveProxies(moves);  // keeps the moves that changed a fat box
+        batched.broadPhase.moveProxies(moves);
         std::set<ProxyId> moved;
         for (const DynamicAabbTree::ProxyMove& move : moves) moved.insert(move.id);
         for (std::size_t i = 0; i < oneByOne.proxies.size(); ++i) {
@@ -660,8 +661,8 @@ void TestBroadPhase::steadyStateDoesNotAllocate() {
             if (i % 97 == static_cast<std::size_t>(stepIndex % 97)) {
                 p.tight = translated(p.tight, uniformVec(scene.rng, -scene.half, scene.half) - p.tight.center());
             }
-            if (batched) moves.push_back({p.id, p.tight, displacement});
-            else reinserted += bp.moveProxy(p.id, p.tight, displacement) ? 1 : 0;
+            if (!batched) reinserted += bp.moveProxy(p.id, p.tight, displacement) ? 1 : 0;
+            else if (bp.leavesFatBox(p.id, p.tight, displacement)) moves.push_back({p.id, p.tight, displacement});
         }
         if (batched) {
             bp.moveProxies(moves);

@@ -45,13 +45,12 @@ bool BroadPhase::moveProxy(ProxyId id, const Aabb& tight, const Vec3& displaceme
     return true;
 }
 
-void BroadPhase::moveProxies(std::vector<DynamicAabbTree::ProxyMove>& moves) {
-    std::erase_if(moves, [this](const DynamicAabbTree::ProxyMove& move) {
+void BroadPhase::moveProxies(const std::vector<DynamicAabbTree::ProxyMove>& moves) {
+    for (const DynamicAabbTree::ProxyMove& move : moves) {
         assert(flags_[move.id] & kAlive);
-        return !tree_.leavesFatBox(move.id, move.tight, move.displacement);
-    });
+        markMoved(move.id);
+    }
     tree_.moveProxies(moves);
-    for (const DynamicAabbTree::ProxyMove& move : moves) markMoved(move.id);
 }
 
 void BroadPhase::setActive(ProxyId id, bool active) {

@@ -41,9 +41,13 @@ public:
     void removeProxy(ProxyId id);
     // Returns true when the fat box changed (the proxy then counts as moved).
     bool moveProxy(ProxyId id, const Aabb& tight, const Vec3& displacement);
-    // moveProxy for many proxies at once (DynamicAabbTree::moveProxies); keeps in `moves` those
-    // whose fat box changed.
-    void moveProxies(std::vector<DynamicAabbTree::ProxyMove>& moves);
+    // Whether moveProxy would change the proxy's fat box (DynamicAabbTree::leavesFatBox).
+    bool leavesFatBox(ProxyId id, const Aabb& tight, const Vec3& displacement) const {
+        return tree_.leavesFatBox(id, tight, displacement);
+    }
+    // moveProxy for many proxies at once, each of which leaves its fat box
+    // (DynamicAabbTree::moveProxies).
+    void moveProxies(const std::vector<DynamicAabbTree::ProxyMove>& moves);
     // Activating a proxy counts as a move, so a body that wakes up gets its pairs reported again.
     void setActive(ProxyId id, bool active);
     bool isActive(ProxyId id) const { return (flags_[id] & kActive) != 0; }

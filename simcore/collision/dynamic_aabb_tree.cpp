@@ -96,6 +96,7 @@ void DynamicAabbTree::moveProxies(const std::vector<ProxyMove>& moves) {
     const bool asOneSubtree = static_cast<float>(moves.size()) >= kSubtreeShare * static_cast<float>(proxyCount_);
     buildItems_.clear();
     for (const ProxyMove& move : moves) {
+        assert(leavesFatBox(move.id, move.tight, move.displacement));
         removeLeaf(move.id);
         Node& leaf = nodes_[move.id];
         leaf.box = enlarge(move.tight, move.displacement);

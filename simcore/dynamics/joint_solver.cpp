@@ -95,10 +95,7 @@ void JointSolver::prepare(JointStorage& joints, const BodyStorage& bodies, const
     const float h = params.substepDt;
     soft_ = SoftConstraint::make(SoftConstraint::cappedHertz(params.joint.hertz, h), params.joint.dampingRatio, h);
 
-    auto moves = [&bodies](int i) {
-        return i >= 0 && bodies.motion[static_cast<std::size_t>(i)] == MotionType::Dynamic &&
-               bodies.awake[static_cast<std::size_t>(i)];
-    };
+    auto moves = [&bodies](int i) { return i >= 0 && bodies.isAwakeDynamic(static_cast<std::size_t>(i)); };
     for (std::size_t ji = 0; ji < joints.size(); ++ji) {
         const Joint& j = joints.joints[ji];
         const int a = bodies.denseIndex(j.bodyA);

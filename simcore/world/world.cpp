@@ -383,8 +383,12 @@ std::size_t World::updateBroadPhase(float dt) {
             if (moves(i)) bodies_.bounds[i] = worldBounds(bodies_.shape[i], bodies_.transform(i));
     });
     proxyMoves_.clear();
-    for (std::size_t i = 0; i < bodies_.size(); ++i)
-        if (moves(i)) proxyMoves_.push_back({bodies_.proxy[i], bodies_.bounds[i], dt * bodies_.linearVelocity[i]});
+    for (std::size_t i = 0; i < bodies_.size(); ++i) {
+        if (!moves(i)) continue;
+        const Vec3 displacement = dt * bodies_.linearVelocity[i];
+        if (broadPhase_.leavesFatBox(bodies_.proxy[i], bodies_.bounds[i], displacement))
+            proxyMoves_.push_back({bodies_.proxy[i], bodies_.bounds[i], displacement});
+    }
     broadPhase_.moveProxies(proxyMoves_);
     broadPhase_.updatePairs(newPairs_, threads_.pool());
     // Jointed bodies do not collide unless their joint asks for it (collideConnected).
@@ -439,7 +443,7 @@ bool World::sweepFastBodies() {
             std::uint64_t count = 0;
             for (std::size_t i = begin; i < end; ++i) {
                 bool fast = false;
-                if (bodies_.motion[i] == MotionType::Dynamic && bodies_.awake[i]) {
+                if (bodies_.isAwakeDynamic(i)) {
                     const Sweep sweep = sweepOf(i);
                     const float travel = glm::length(sweep.center1 - sweep.center0) +
                                          sweep.rotationAngle() * glm::length(bodies_.bounds[i].halfExtents());

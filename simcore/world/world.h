@@ -400,7 +400,7 @@ private:
     JointSolver jointSolver_;
     PairTable jointFilteredPairs_;    // body-slot pair -> how many joints keep the two from colliding
     std::vector<BodyPair> newPairs_;  // scratch, reused every step
-    std::vector<DynamicAabbTree::ProxyMove> proxyMoves_;  // scratch: the awake bodies' new bounds
+    std::vector<DynamicAabbTree::ProxyMove> proxyMoves_;  // scratch: bodies that left their fat boxes
     std::vector<std::uint8_t> fastBody_;                  // scratch: by body, 1 where continuous collision sweeps it
     std::vector<Vec3> sweepStartCenter_;     // scratch: awake bodies' poses at the start of the step,
     std::vector<Quat> sweepStartRotation_;   // for continuous collision
