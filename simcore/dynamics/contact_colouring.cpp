@@ -136,20 +136,26 @@ void ContactSolver::assignLanes(const std::vector<Contact>& contacts, const Body
     });
     laneConstraint_.resize(batches_.size() * kLanes);
     const std::size_t colors = colorsInUse_;  // and the overflow after them
-    pool_->parallelFor(colors + 1, 1, [&](std::size_t index, std::size_t, std::size_t) {
-        const std::size_t color = index < colors ? index : kOverflow;
-        const std::uint32_t* first = colorEntries_.data() + colorFirstEntry_[color];
-        const std::uint32_t* last = colorEntries_.data() + colorFirstEntry_[color + 1];
-        const auto stiff = static_cast<std::uint32_t>(
-            std::count_if(first, last, [this](std::uint32_t k) { return stiffening_[k] > 1.0f; }));
-        const std::uint32_t lanes = color == kOverflow ? 1 : kLanes;
-        colorStiffEnd_[color] = colorFirstBatch_[color] + (stiff + lanes - 1) / lanes;
-        std::uint32_t* lane = laneConstraint_.data() + colorFirstBatch_[color] * kLanes;
-        std::fill(lane, laneConstraint_.data() + colorFirstBatch_[color + 1] * kLanes, kNoConstraint);
-        std::uint32_t filledStiff = 0, filledPlain = stiff;
-        for (const std::uint32_t* k = first; k != last; ++k) {
-            const std::uint32_t slot = stiffening_[*k] > 1.0f ? filledStiff++ : filledPlain++;
-            lane[slot / lanes * kLanes + slot % lanes] = *k;
+    // The colours are this loop's chunks, of uneven sizes. Shared out only when there are as many
+    // manifolds as the loop above shares out: a tower's two colours of ten woke a sleeping worker in
+    // every step that tried workers, for less work than the wake-up.
+    const std::size_t colorsPerChunk = order_.size() > kEntryGrain ? 1 : colors + 1;
+    pool_->parallelFor(colors + 1, colorsPerChunk, [&](std::size_t, std::size_t begin, std::size_t end) {
+        for (std::size_t index = begin; index < end; ++index) {
+            const std::size_t color = index < colors ? index : kOverflow;
+            const std::uint32_t* first = colorEntries_.data() + colorFirstEntry_[color];
+            const std::uint32_t* last = colorEntries_.data() + colorFirstEntry_[color + 1];
+            const auto stiff = static_cast<std::uint32_t>(
+                std::count_if(first, last, [this](std::uint32_t k) { return stiffening_[k] > 1.0f; }));
+            const std::uint32_t lanes = color == kOverflow ? 1 : kLanes;
+            colorStiffEnd_[color] = colorFirstBatch_[color] + (stiff + lanes - 1) / lanes;
+            std::uint32_t* lane = laneConstraint_.data() + colorFirstBatch_[color] * kLanes;
+            std::fill(lane, laneConstraint_.data() + colorFirstBatch_[color + 1] * kLanes, kNoConstraint);
+            std::uint32_t filledStiff = 0, filledPlain = stiff;
+            for (const std::uint32_t* k = first; k != last; ++k) {
+                const std::uint32_t slot = stiffening_[*k] > 1.0f ? filledStiff++ : filledPlain++;
+                lane[slot / lanes * kLanes + slot % lanes] = *k;
+            }
         }
     });
     for (std::size_t color = colors; color < kOverflow; ++color) colorStiffEnd_[color] = colorFirstBatch_[color];
