@@ -4,7 +4,9 @@
 // bit for bit: the table says whether every thread count ended in the same bits, as it must.
 //
 // Runs of one scene alternate between thread counts (1, 2, N, then 2, N, 1, ...), so a burst of
-// load on a shared machine spreads over all of them; the report records the load average.
+// load on a shared machine spreads over all of them; the report records the load average. A scene
+// whose runs are short runs more of them (--min-time), so that one preempted step does not decide
+// its median: a tower of 40's 600 steps take 3.3 ms, and one preemption 40-80 us.
 
 #include "support/state_hash.h"
 
@@ -48,17 +50,19 @@ constexpr int kOtherSceneSteps = 600;
 constexpr const char* kRssScene = "pile1k";
 
 const char* usageText() {
-    return "usage: interplay-bench-threads [--scene NAME]... [--steps N] [--repeat R] [--threads T]...\n"
-           "                               [--out FILE] [--scenes-dir DIR]\n"
+    return "usage: interplay-bench-threads [--scene NAME]... [--steps N] [--repeat R] [--min-time S]\n"
+           "                               [--threads T]... [--out FILE] [--scenes-dir DIR]\n"
            "\n"
            "Steps each benchmark scene at several thread counts (settings.threads) and writes a Markdown\n"
-           "table of ms per step (medians of R runs, with their range), the speedup over 1 thread, whether\n"
-           "every thread count ended in the same bits, and the peak resident memory after pile1k.\n"
+           "table of ms per step (medians of R or more runs, with their range), the speedup over 1 thread,\n"
+           "whether every thread count ended in the same bits, and the peak resident memory after pile1k.\n"
            "\n"
            "  --scene NAME      DIR/NAME.json; repeatable (default: every .json in DIR)\n"
            "  --steps N         steps per run (default: pile1k, mixed1k, pyramid10 600, pyramid20 120,\n"
            "                    tower20 3600, others 600)\n"
-           "  --repeat R        runs per scene and thread count (default 3)\n"
+           "  --repeat R        runs per scene and thread count, at least (default 3)\n"
+           "  --min-time S      and more until each thread count has stepped the scene for S seconds\n"
+           "                    in all (default 0.5)\n"
            "  --threads T       a thread count to run, 0 meaning all cores; repeatable (default 1, 2, 0)\n"
            "  --out FILE        where to write the table (default: " INTERPLAY_SOURCE_DIR
            "/bench/results/threads.md;\n"
@@ -73,6 +77,7 @@ struct Options {
     std::vector<std::string> scenes;
     std::optional<int> steps;
     int repeat = 3;
+    double minSeconds = 0.5;
     std::vector<int> threads;
     std::string out = INTERPLAY_SOURCE_DIR "/bench/results/threads.md";
     fs::path scenesDir = fs::path(INTERPLAY_SOURCE_DIR) / "scenes" / "bench";
@@ -83,6 +88,18 @@ bool parseInt(const std::string& text, int& out, int minimum) {
         std::size_t used = 0;
         const int v = std::stoi(text, &used);
         if (used != text.size() || v < minimum) return false;
+        out = v;
+        return true;
+    } catch (const std::exception&) {
+        return false;
+    }
+}
+
+bool parseSeconds(const std::string& text, double& out) {
+    try {
+        std::size_t used = 0;
+        const double v = std::stod(text, &used);
+        if (used != text.size() || !(v >= 0.0) || v > 3600.0) return false;
         out = v;
         return true;
     } catch (const std::exception&) {
@@ -115,6 +132,8 @@ std::optional<std::string> parseArguments(int argc, char** argv, Options& option
         } else if (arg == "--repeat") {
             if (!value() || !parseInt(v, n, 1)) return "--repeat needs a whole number >= 1";
             options.repeat = n;
+        } else if (arg == "--min-time") {
+            if (!value() || !parseSeconds(v, options.minSeconds)) return "--min-time needs a number of seconds >= 0";
         } else if (arg == "--threads") {
             if (!value() || !parseInt(v, n, 0)) return "--threads needs a whole number >= 0 (0: all cores)";
             options.threads.push_back(n);
@@ -244,6 +263,7 @@ std::string msText(double ms) { return fixed(ms, ms < 0.1 ? 4 : ms < 10.0 ? 3 : 
 struct Cell {
     std::vector<double> ms;
     std::vector<double> roundTripNs;  // measured before each run (multi-threaded runs only)
+    double seconds = 0.0;             // stepping, over all runs
     std::uint64_t state = 0;
 };
 
@@ -308,13 +328,20 @@ int main(int argc, char** argv) {
         row.cells.resize(options.threads.size());
         std::cerr << "interplay-bench-threads: " << row.name << ", " << row.steps << " steps" << std::flush;
         const std::size_t counts = options.threads.size();
-        for (int r = 0; r < options.repeat; ++r) {
+        const auto enoughRuns = [&](int runs) {
+            if (runs < options.repeat) return false;
+            for (const Cell& cell : row.cells)
+                if (cell.seconds < options.minSeconds) return false;
+            return true;
+        };
+        for (int r = 0; !enoughRuns(r); ++r) {
             for (std::size_t k = 0; k < counts; ++k) {
                 const std::size_t t = (k + static_cast<std::size_t>(r)) % counts;  // rotate who goes first
                 Cell& cell = row.cells[t];
                 if (options.threads[t] > 1) cell.roundTripNs.push_back(roundTripNs());
                 const Run run = runScene(scenes[s], options.threads[t], row.steps);
                 cell.ms.push_back(run.msPerStep);
+                cell.seconds += 1e-3 * run.msPerStep * row.steps;
                 cell.state = run.finalState;
                 std::cerr << '.' << std::flush;
             }
@@ -330,23 +357,24 @@ int main(int argc, char** argv) {
        << "`interplay-bench-threads` (bench/thread_scaling.cpp), " << started << ", " << INTERPLAY_BUILD_TYPE
        << " build, " << firstLineOf("/proc/cpuinfo", "model name") << ", " << std::thread::hardware_concurrency()
        << " hardware threads; load average (1, 5, 15 min) " << loadBefore << " before, " << loadAverage()
-       << " after. ms per step of the stepping loop (wall time), the median of " << options.repeat
-       << " runs, the range of the runs in brackets; the runs of a scene alternate between thread counts. "
+       << " after. ms per step of the stepping loop (wall time), the median of a scene's runs (at least "
+       << options.repeat << ", and more until each thread count has stepped it for " << fixed(options.minSeconds, 1)
+       << " s), the range of the runs in brackets; the runs of a scene alternate between thread counts. "
        << "\"same bits\": every thread count ended in the same state, bit for bit. After the range of a "
        << "multi-threaded cell, the range of the core-to-core round trip measured before each of its runs "
        << "(two threads passing a counter): where the host runs the threads on cores that share a cache it "
        << "is several times shorter, and the workers' hand-overs of bodies and manifolds cost that much less.\n\n";
-    md << "| scene | bodies | steps |";
+    md << "| scene | bodies | steps | runs |";
     const int cores = resolvedThreads(0);
     for (int threads : options.threads)
         md << ' ' << threads << (threads == 1 ? " thread" : " threads") << (threads == cores ? " (all cores)" : "") << " |";
     for (std::size_t t = 1; t < options.threads.size(); ++t)
         md << " speedup " << options.threads[t] << " / " << options.threads[0] << " |";
-    md << " same bits |\n|---|--:|--:|";
+    md << " same bits |\n|---|--:|--:|--:|";
     for (std::size_t t = 0; t < 2 * options.threads.size() - 1; ++t) md << "--:|";
     md << "---|\n";
     for (const SceneRow& row : rows) {
-        md << "| " << row.name << " | " << row.bodies << " | " << row.steps << " |";
+        md << "| " << row.name << " | " << row.bodies << " | " << row.steps << " | " << row.cells.front().ms.size() << " |";
         for (const Cell& cell : row.cells) {
             const auto [low, high] = std::minmax_element(cell.ms.begin(), cell.ms.end());
             md << ' ' << msText(median(cell.ms)) << " (" << msText(*low) << "–" << msText(*high) << ")";
