@@ -15,6 +15,7 @@ void addStepProfile(RunSummary& summary, const simcore::StepProfile& profile) {
     for (std::size_t s = 0; s < summary.stageMs.size(); ++s) {
         summary.stageMs[s] += profile.stageMs[s];
         if (profile.withWorkers[s]) ++summary.stepsWithWorkers[s];
+        summary.handOvers[s] += profile.handOvers[s];
         if (profile.skipped[s] == simcore::StageSkip::Ran) continue;
         ++summary.stageSkips[s];
         summary.lastSkip[s] = profile.skipped[s];
@@ -43,7 +44,8 @@ nlohmann::ordered_json makeReport(const simcore::World& world, const RunSummary&
         nlohmann::ordered_json stage = {{"stage", info.key},
                                         {"msPerStep", summary.stageMs[s] * perStep},
                                         {"stepsRun", summary.steps - summary.stageSkips[s]},
-                                        {"stepsWithWorkers", summary.stepsWithWorkers[s]}};
+                                        {"stepsWithWorkers", summary.stepsWithWorkers[s]},
+                                        {"handOversPerStep", static_cast<double>(summary.handOvers[s]) * perStep}};
         if (summary.stageSkips[s] > 0) stage["skipped"] = stageSkipReason(summary.lastSkip[s]);
         stages.push_back(stage);
     }

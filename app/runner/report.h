@@ -20,6 +20,7 @@ struct RunSummary {
     std::array<double, simcore::kStageCount> stageMs{};     // summed over all steps
     std::array<std::uint64_t, simcore::kStageCount> stageSkips{};  // steps that skipped each stage
     std::array<std::uint64_t, simcore::kStageCount> stepsWithWorkers{};  // steps that ran it on workers too
+    std::array<std::uint64_t, simcore::kStageCount> handOvers{};         // jobs it offered the workers, summed
     std::array<simcore::StageSkip, simcore::kStageCount> lastSkip{};  // why, in the latest of them
     double initialEnergy = 0.0;                              // kinetic + potential before step 1 (J)
     float maxPenetration = 0.0f;                             // deepest contact overlap seen in any step (m)

@@ -67,6 +67,7 @@ TaskPool::~TaskPool() {
 // generation), the caller runs whatever chunks are left, closes it, and waits only for the workers
 // that joined and may still be running a chunk of it (its body lives on the caller's stack).
 void TaskPool::run(const Job& job) {
+    ++jobsOffered_;
     job_ = job;
     const std::size_t participants = progress_.size();
     for (std::size_t q = 0; q < job.phases; ++q) {

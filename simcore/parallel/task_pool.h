@@ -38,6 +38,10 @@ public:
     // The threads a parallelFor runs on now: 1 while the workers are off.
     int activeThreadCount() const { return workersEnabled_ ? threadCount() : 1; }
 
+    // Jobs offered to the workers so far: each a hand-over, of a few hundred nanoseconds between
+    // cores that share a cache, and tens of microseconds where it wakes a worker that went to sleep.
+    std::uint64_t jobsOffered() const { return jobsOffered_; }
+
     // Off: parallelFor runs every chunk on the calling thread, in chunk order, as with one thread
     // (the same chunks, so the same results). For work the workers would only slow down.
     void setWorkersEnabled(bool enabled) { workersEnabled_ = enabled; }
@@ -135,6 +139,7 @@ private:
     // the heap puts the pool.
     std::vector<std::thread> workers_;
     bool workersEnabled_ = true;
+    std::uint64_t jobsOffered_ = 0;  // the caller's own count
     alignas(64) Job job_;  // written by run() only while no worker is in a job
     // Odd while a job is open to workers. A worker joins by counting itself in busyWorkers_ and
     // then finding the generation unchanged; run() closes the job and then waits for busyWorkers_

@@ -137,8 +137,12 @@ void World::step() {
         const auto s = static_cast<std::size_t>(stage);
         if (profile.skipped[s] != StageSkip::Ran) return;
         profile.withWorkers[s] = threads_.startStage(stage);
-        ScopedStageTimer timer(profile.stageMs[s]);
-        work();
+        const std::uint64_t offered = threads_.pool().jobsOffered();
+        {
+            ScopedStageTimer timer(profile.stageMs[s]);
+            work();
+        }
+        profile.handOvers[s] += static_cast<std::uint32_t>(threads_.pool().jobsOffered() - offered);
     };
     const float h = plan.substepDt;
 
