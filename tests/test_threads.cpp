@@ -1,8 +1,8 @@
 // The task pool and the multi-threaded step: the pool splits work into fixed chunks and runs every
 // one exactly once, phases of a job in order, waking workers that went to sleep; the tuner that picks, per stage, whether the
 // workers run it learns the faster way from timings and keeps checking; a world gives the same bits for 1, 2 and 4 threads on every benchmark scene and
-// on jointed scenes (bodies and contacts compared after every step); a tower's steps hand the
-// workers nothing; and a step with worker threads allocates nothing once the contact set is steady.
+// on jointed scenes (bodies and contacts compared after every step); and a step with worker
+// threads allocates nothing once the contact set is steady.
 
 #include "support/allocation_counter.h"
 #include "support/sanitizers.h"
@@ -124,7 +124,6 @@ private slots:
     void stepIsBitIdenticalForAnyThreadCount();
     void changingThreadsMidRunChangesNothing();
     void negativeThreadsAreRefused();
-    void smallStackHandsNothingToTheWorkers();
     void steadyStateStepWithWorkersDoesNotAllocate();
 };
 
@@ -749,29 +748,6 @@ void TestThreads::changingThreadsMidRunChangesNothing() {
     }
     QCOMPARE(test_support::stateHash(switching.world), test_support::stateHash(single.world));
     QCOMPARE(contactHash(switching.world), contactHash(single.world));
-}
-
-void TestThreads::smallStackHandsNothingToTheWorkers() {
-    // A tower's jobs have at most a chunk per thread, and handing one over wakes a worker that has
-    // gone to sleep, for more than the job takes: tower40 at 2 threads was 1.5% slower than at 1
-    // while the filling of its solver's lanes did (2026-12-07). A pile of a thousand does hand
-    // over, so the count is not stuck at zero.
-    const auto handOvers = [](const char* path, int threads, int steps) {
-        SceneLoadResult loaded = loadSceneFile(kSourceDir / path);
-        if (!loaded.ok()) throw std::runtime_error(std::string(path) + " does not load");
-        loaded.scene->settings.threads = threads;
-        BuiltWorld built = buildWorld(*loaded.scene);
-        std::uint64_t jobs = 0;
-        for (int step = 0; step < steps; ++step) {
-            built.world.step();
-            for (std::uint32_t stageJobs : built.world.lastStepProfile().handOvers) jobs += stageJobs;
-        }
-        return jobs;
-    };
-    QCOMPARE(handOvers("scenes/bench/tower40.json", 2, 600), std::uint64_t{0});
-    QCOMPARE(handOvers("scenes/bench/tower20.json", 4, 120), std::uint64_t{0});
-    QVERIFY(handOvers("scenes/bench/pile1k.json", 2, 20) > 0);
-    QCOMPARE(handOvers("scenes/bench/pile1k.json", 1, 20), std::uint64_t{0});
 }
 
 void TestThreads::negativeThreadsAreRefused() {
