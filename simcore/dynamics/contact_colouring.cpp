@@ -136,8 +136,8 @@ void ContactSolver::assignLanes(const std::vector<Contact>& contacts, const Body
     });
     laneConstraint_.resize(batches_.size() * kLanes);
     const std::size_t colors = colorsInUse_;  // and the overflow after them
-    // The colours are this loop's chunks, of uneven sizes. Shared out only when there are as many
-    // manifolds as the loop above shares out: a tower's two colours of ten woke a sleeping worker in
+    // The colours are this loop's chunks, of uneven sizes: shared out only when the manifolds are
+    // more than one chunk of the loop above. A tower's two colours of ten woke a sleeping worker in
     // every step that tried workers, for less work than the wake-up.
     const std::size_t colorsPerChunk = order_.size() > kEntryGrain ? 1 : colors + 1;
     pool_->parallelFor(colors + 1, colorsPerChunk, [&](std::size_t, std::size_t begin, std::size_t end) {
