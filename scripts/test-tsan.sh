@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Builds the engine, the runner and every suite that needs no window and starts threads with
 # ThreadSanitizer (clang, into build-tsan/) and runs them: the ASan + UBSan stage's suites but the
-# eight marked THREADLESS in tests/CMakeLists.txt (shapes, hulls, GJK/EPA, shape pairs, ray casts,
-# meshes, the broad phase, mesh import: single-threaded code). The build sets the default of
+# nine marked THREADLESS in tests/CMakeLists.txt (shapes, hulls, GJK/EPA, shape pairs, ray casts,
+# meshes, the broad phase, mesh import, the worker tuner: single-threaded code). The build sets the default of
 # WorldSettings::threads to 4 (SIMCORE_DEFAULT_THREADS), so every world the suites make, in code or
 # from a scene file without "threads", steps its parallel stages on a pool of 3 workers and the
 # caller; test_threads also runs 2 and 4 threads against 1 bit for bit. The first report ends the

@@ -16,7 +16,8 @@
 // for two steps. A step that runs a stage the other way than the step before moves the stage's data
 // to the cores that way keeps it on, and the host's preemptions (one step in a few hundred took
 // 40-80 us longer, a tower of 40's whole step) only add time too: so two steps one way are judged
-// by the faster, and the first step of a probe and the step after it count as the probe's cost.
+// by the faster, and the first step of a probe and the step after it count as the probe's cost
+// (the step after, no more than the first: what it takes beyond moving the data is the scene's).
 // (Judged by its first step, an inline probe paid for gathering onto one core what the workers had
 // spread over two: pyramid10 at 2 threads on cores that share no cache stepped at 1.75 ms with
 // workers, 1.9 ms in the probe, and kept the workers; 1 thread took 1.27 ms, 2026-12-06.) A probe
@@ -91,10 +92,13 @@ public:
             state.lastWay = way;
             if (!state.learnt()) return;  // learning: the next step is learnt from
             const double excessMs = std::max(0.0, ms - state.estimateRate[chosen()] * work);
+            // Back after a probe that lost, moving the data back costs what moving it out did; more
+            // is the scene's own change. mixed1k's step grew from 0.5 to 1.3 ms as its bodies
+            // landed, and charged in full, the step back put off the next probe by 39 ms, past the
+            // landing (2026-12-07).
             if (probing)
                 state.probeMoveMs = excessMs;  // the probe's first step; it goes on
-            else if (afterProbe)
-                state.msToProbe += excessMs / kProbeCostShare;  // back after a probe that lost
+            else if (afterProbe) state.msToProbe += std::min(excessMs, state.probeMoveMs) / kProbeCostShare;
             // Otherwise the stage has not been timed for a while (the world's stages learn only in
             // steps that use workers): what it takes now is not a probe's cost. Charged as one,
             // mixed1k's prepare and solver, timed last in the learning at 0.07 ms a step and again
