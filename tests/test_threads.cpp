@@ -110,6 +110,7 @@ private slots:
     void worldThreadsUseWorkersSoonWhenEveryStageGains();
     void worldThreadsRecoverFromAnUnluckyFirstMeasurement();
     void worldThreadsTuneTheSolverStagesTogether();
+    void worldThreadsLearnNothingFromStepsWithNothingToShare();
     void stepIsBitIdenticalForAnyThreadCount_data();
     void stepIsBitIdenticalForAnyThreadCount();
     void changingThreadsMidRunChangesNothing();
@@ -245,6 +246,9 @@ void TestThreads::poolWithWorkersOffRunsOnTheCallerInOrder() {
     QVERIFY(!elsewhere);
     QCOMPARE(chunks.size(), TaskPool::chunkCount(100, 7));
     for (std::size_t k = 0; k < chunks.size(); ++k) QCOMPARE(chunks[k], k);
+    // Counted as work the workers could have shared, not offered to them.
+    QCOMPARE(pool.sharableJobs(), std::uint64_t{1});
+    QCOMPARE(pool.jobsOffered(), std::uint64_t{0});
 }
 
 void TestThreads::poolRunsNarrowPhasesOnTheCaller() {
@@ -272,6 +276,8 @@ void TestThreads::poolRunsNarrowPhasesOnTheCaller() {
             return std::uint64_t{end - begin};
         });
     QVERIFY(!elsewhere);
+    QCOMPARE(pool.sharableJobs(), std::uint64_t{1});  // the first parallelFor only
+    QCOMPARE(pool.jobsOffered(), std::uint64_t{1});
     QCOMPARE(sum, std::uint64_t{3 * (0 + 1 + 2 + 3 + 4 + 5 + 6 + 7 + 8)});
     QCOMPARE(phases.size(), std::size_t{3 * (4 * 1 + 4 * 2)});  // the phases of size 0 have no chunk
     QVERIFY(std::is_sorted(phases.begin(), phases.end()));
@@ -303,15 +309,16 @@ void TestThreads::largeArraysKeepTheirElementsOnHugePageBoundaries() {
 
 namespace {
 
-// One step of a world whose only stages are `stages`, run in that order, each taking
-// stageMs(stage, withWorkers) as the world's threads chose: how many ran with workers, and the
-// step's time.
+// One step of a world whose only stages are `stages`, run in that order, each with work the
+// workers can share (unless `sharable` is false) and taking stageMs(stage, withWorkers) as the
+// world's threads chose: how many ran with workers, and the step's time.
 struct MadeUpStep {
     int stagesWithWorkers = 0;
     double ms = 0.0;
 };
 template <class StageMs>
-MadeUpStep stepStages(WorldThreads& threads, std::initializer_list<Stage> stages, StageMs&& stageMs) {
+MadeUpStep stepStages(WorldThreads& threads, std::initializer_list<Stage> stages, StageMs&& stageMs,
+                      bool sharable = true) {
     StepProfile profile;
     profile.skipped.fill(StageSkip::NothingAwake);
     MadeUpStep step;
@@ -319,6 +326,7 @@ MadeUpStep stepStages(WorldThreads& threads, std::initializer_list<Stage> stages
         const auto s = static_cast<std::size_t>(stage);
         profile.skipped[s] = StageSkip::Ran;
         const bool withWorkers = threads.startStage(stage);
+        if (sharable) threads.pool().parallelFor(64, 1, [](std::size_t, std::size_t, std::size_t) {});
         step.stagesWithWorkers += withWorkers;
         profile.stageMs[s] = stageMs(stage, withWorkers);
         step.ms += profile.stageMs[s];
@@ -426,6 +434,21 @@ void TestThreads::worldThreadsTuneTheSolverStagesTogether() {
     // least kMinProbeInterval.
     QVERIFY2(lateSolverStepsWithWorkers >= lateSolverSteps * (1.0 - 2.0 / WorkerTuner<1>::kMinProbeInterval),
              qPrintable(QString::number(lateSolverStepsWithWorkers)));
+}
+
+void TestThreads::worldThreadsLearnNothingFromStepsWithNothingToShare() {
+    // A tower's steps: every job too narrow to share, so with workers or without the same code
+    // runs, and what the timings say (here inline twice as fast) is noise.
+    WorldThreads threads;
+    threads.configure(2);
+    const auto stageMs = [](Stage, bool withWorkers) { return withWorkers ? 1.0 : 0.5; };
+    for (int step = 0; step < 50; ++step) stepStages(threads, {Stage::Collide}, stageMs, false);
+    // The first steps with work to share start the learning (workers first, twice, then inline),
+    // as in a world that has just been made.
+    std::vector<bool> ways;
+    for (int step = 0; step < 4; ++step)
+        ways.push_back(stepStages(threads, {Stage::Collide}, stageMs).stagesWithWorkers > 0);
+    QCOMPARE(ways, (std::vector<bool>{true, true, false, false}));
 }
 
 void TestThreads::stepIsBitIdenticalForAnyThreadCount_data() {

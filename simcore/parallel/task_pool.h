@@ -41,6 +41,9 @@ public:
     // Jobs offered to the workers so far: each a hand-over, of a few hundred nanoseconds between
     // cores that share a cache, and tens of microseconds where it wakes a worker that went to sleep.
     std::uint64_t jobsOffered() const { return jobsOffered_; }
+    // Jobs so far that the workers would have been offered, whether they were on or off: where a
+    // stretch of work has none, it runs the same with the workers off as on.
+    std::uint64_t sharableJobs() const { return sharableJobs_; }
 
     // Off: parallelFor runs every chunk on the calling thread, in chunk order, as with one thread
     // (the same chunks, so the same results). For work the workers would only slow down.
@@ -54,7 +57,7 @@ public:
     template <class Body>
     void parallelFor(std::size_t count, std::size_t grain, Body&& body) {
         const std::size_t chunks = chunkCount(count, grain);
-        if (workers_.empty() || !workersEnabled_ || chunks <= 1) {
+        if (!sharable(chunks > 1) || !workersEnabled_) {
             for (std::size_t k = 0; k < chunks; ++k) body(k, k * grain, std::min(count, (k + 1) * grain));
             return;
         }
@@ -101,7 +104,7 @@ public:
         // its steps took 2-5 us longer, and learning and probing them cost 1 % of its run).
         const bool phasesTooNarrow = widestPhase <= 1 || (phases > 1 && widestPhase <= progress_.size());
         std::uint64_t sum = 0;
-        if (workers_.empty() || !workersEnabled_ || phasesTooNarrow) {
+        if (!sharable(!phasesTooNarrow) || !workersEnabled_) {
             for (std::size_t q = 0; q < phases; ++q)
                 for (std::size_t k = 0, n = phaseFirstChunk_[q + 1] - phaseFirstChunk_[q]; k < n; ++k)
                     sum += countChunk(q, k * grain, std::min(phaseSize_[q], (k + 1) * grain));
@@ -139,7 +142,14 @@ private:
     // the heap puts the pool.
     std::vector<std::thread> workers_;
     bool workersEnabled_ = true;
-    std::uint64_t jobsOffered_ = 0;  // the caller's own count
+    std::uint64_t jobsOffered_ = 0;  // the caller's own counts
+    std::uint64_t sharableJobs_ = 0;
+    // Whether a job that `wide` says has work for more than one thread can be shared here, counted.
+    bool sharable(bool wide) {
+        if (workers_.empty() || !wide) return false;
+        ++sharableJobs_;
+        return true;
+    }
     alignas(64) Job job_;  // written by run() only while no worker is in a job
     // Odd while a job is open to workers. A worker joins by counting itself in busyWorkers_ and
     // then finding the generation unchanged; run() closes the job and then waits for busyWorkers_
