@@ -385,12 +385,12 @@ inline bool ContactSolver::forEachBatch(SolveBatch&& solveBatch, bool stiffOnly)
     const std::size_t colors = colorsInUse_;
     const std::uint32_t* colorEnd = stiffOnly ? colorStiffEnd_.data() : colorFirstBatch_.data() + 1;
     const std::size_t overflowEnd = colorEnd[kOverflow];
-    for (std::size_t color = 0; color < colors; ++color) batchWork_ += colorEnd[color] - colorFirstBatch_[color];
-    batchWork_ += overflowEnd - colorFirstBatch_[kOverflow];
+    const auto batchesOf = [&](std::size_t color) { return colorEnd[color] - colorFirstBatch_[color]; };
+    for (std::size_t color = 0; color < colors; ++color) batchWork_ += batchesOf(color);
+    batchWork_ += batchesOf(kOverflow);
     // Colour after colour, as one job (a colour of pyramid10 is a few microseconds of work).
     const std::size_t hits = pool_->parallelSumInPhases(
-        colors, kBatchGrain, [&](std::size_t color) { return colorEnd[color] - colorFirstBatch_[color]; },
-        [&](std::size_t color, std::size_t begin, std::size_t end) {
+        colors, kBatchGrain, batchesOf, [&](std::size_t color, std::size_t begin, std::size_t end) {
             std::uint64_t count = 0;
             for (std::size_t k = colorFirstBatch_[color] + begin; k < colorFirstBatch_[color] + end; ++k)
                 if (solveBatch(batches_[k])) ++count;

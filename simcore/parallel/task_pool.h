@@ -127,6 +127,12 @@ private:
         void* context = nullptr;
         std::size_t grain = 0, phases = 0;
     };
+    // Whether a job that `wide` says has work for more than one thread can be shared here, counted.
+    bool sharable(bool wide) {
+        if (workers_.empty() || !wide) return false;
+        ++sharableJobs_;
+        return true;
+    }
     void growPhases(std::size_t phases);
     void run(const Job& job);
     void workerLoop(int participant);
@@ -144,12 +150,6 @@ private:
     bool workersEnabled_ = true;
     std::uint64_t jobsOffered_ = 0;  // the caller's own counts
     std::uint64_t sharableJobs_ = 0;
-    // Whether a job that `wide` says has work for more than one thread can be shared here, counted.
-    bool sharable(bool wide) {
-        if (workers_.empty() || !wide) return false;
-        ++sharableJobs_;
-        return true;
-    }
     alignas(64) Job job_;  // written by run() only while no worker is in a job
     // Odd while a job is open to workers. A worker joins by counting itself in busyWorkers_ and
     // then finding the generation unchanged; run() closes the job and then waits for busyWorkers_

@@ -111,7 +111,7 @@ public:
     // learnt in a probe of the step tuner's measured that probe, and stages that had learnt inline
     // in one made every later probe lose (pyramid10 at 2 threads: 3 runs in 8 kept 1.03-1.15 ms a
     // step instead of 0.74-0.84, 2026-12-07).
-    // solverWork: the contact solver's batchWork() in the step, the work of the solver's stages.
+    // solverWork: World::solverWork, the work of the solver's stages in the step.
     void learn(const StepProfile& profile, double solverWork) {
         TaskPool& workers = pool();
         // A step with no job the workers could have shared ran the same either way and teaches
