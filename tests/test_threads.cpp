@@ -17,6 +17,10 @@
 
 #include <QtTest>
 
+#if defined(__linux__)
+#include <sched.h>
+#endif
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -105,6 +109,7 @@ private slots:
     void poolWakesSleepingWorkers();
     void poolWithWorkersOffRunsOnTheCallerInOrder();
     void poolRunsNarrowPhasesOnTheCaller();
+    void poolWorkerLeavesTheCallersCpu();
     void largeArraysKeepTheirElementsOnHugePageBoundaries();
     void worldThreadsFallBackWhenStageChoicesAddUpToASlowerStep();
     void worldThreadsUseWorkersSoonWhenEveryStageGains();
@@ -281,6 +286,46 @@ void TestThreads::poolRunsNarrowPhasesOnTheCaller() {
     QCOMPARE(sum, std::uint64_t{3 * (0 + 1 + 2 + 3 + 4 + 5 + 6 + 7 + 8)});
     QCOMPARE(phases.size(), std::size_t{3 * (4 * 1 + 4 * 2)});  // the phases of size 0 have no chunk
     QVERIFY(std::is_sorted(phases.begin(), phases.end()));
+}
+
+// A worker waiting on the CPU the caller runs on only takes turns with it, and the kernel left such
+// a worker there for tens of steps (task_pool.cpp): the worker must move off by itself, not wait
+// for the kernel to. Here the caller moves onto the worker's CPU.
+void TestThreads::poolWorkerLeavesTheCallersCpu() {
+#if defined(__linux__)
+    cpu_set_t callerWas;
+    QCOMPARE(sched_getaffinity(0, sizeof callerWas, &callerWas), 0);
+    if (CPU_COUNT(&callerWas) < 2) QSKIP("needs two CPUs");
+    TaskPool pool(2);
+    const pid_t caller = gettid();
+    std::atomic<pid_t> worker{0};
+    const auto keepOffering = [&](const auto& until) {
+        const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+        while (!until() && std::chrono::steady_clock::now() < deadline) {
+            pool.parallelFor(64, 1, [&](std::size_t, std::size_t, std::size_t) {
+                if (gettid() != caller) worker.store(gettid());
+            });
+        }
+    };
+    // The worker has run a chunk and waited for the next job somewhere.
+    keepOffering([&] { return worker.load() != 0 && pool.lastCpu(1) >= 0; });
+    const int workerCpu = pool.lastCpu(1);
+    QVERIFY(worker.load() != 0 && workerCpu >= 0);
+    cpu_set_t onlyThere;
+    CPU_ZERO(&onlyThere);
+    CPU_SET(workerCpu, &onlyThere);
+    QCOMPARE(sched_setaffinity(0, sizeof onlyThere, &onlyThere), 0);
+    keepOffering([&] { return pool.lastCpu(0) == workerCpu && pool.lastCpu(1) != workerCpu; });
+    sched_setaffinity(0, sizeof callerWas, &callerWas);
+    QCOMPARE(pool.lastCpu(0), workerCpu);
+    QVERIFY2(pool.lastCpu(1) != workerCpu, "the worker stayed on the caller's CPU");
+    cpu_set_t workerMay;
+    QCOMPARE(sched_getaffinity(worker.load(), sizeof workerMay, &workerMay), 0);
+    QVERIFY2(!CPU_ISSET(workerCpu, &workerMay), "the worker left only because the kernel moved it");
+    QVERIFY(CPU_COUNT(&workerMay) > 0);
+#else
+    QSKIP("CPU placement is read and set on Linux only");
+#endif
 }
 
 void TestThreads::largeArraysKeepTheirElementsOnHugePageBoundaries() {

@@ -45,6 +45,12 @@ public:
     // stretch of work has none, it runs the same with the workers off as on.
     std::uint64_t sharableJobs() const { return sharableJobs_; }
 
+    // The CPU participant p (0: the caller, i: worker i) was last seen on, -1 if not yet or where
+    // the platform does not say.
+    int lastCpu(int participant) const {
+        return progress_[static_cast<std::size_t>(participant)].cpu.load(std::memory_order_relaxed);
+    }
+
     // Off: parallelFor runs every chunk on the calling thread, in chunk order, as with one thread
     // (the same chunks, so the same results). For work the workers would only slow down.
     void setWorkersEnabled(bool enabled) { workersEnabled_ = enabled; }
@@ -141,12 +147,15 @@ private:
     void runChunks(int participant);
     // Waits until generation_ differs from `seen` (or the pool stops): spinning and yielding first,
     // since a step's jobs follow each other within microseconds, then asleep. Returns the generation.
-    std::uint64_t awaitGeneration(std::uint64_t seen);
+    std::uint64_t awaitGeneration(std::uint64_t seen, int participant);
+    // Moves a waiting worker off a CPU that another participant was last seen on (see the .cpp).
+    void leaveSharedCpu(int participant);
 
     // What the threads write while a job runs (the generation, the count of busy workers, each
     // participant's progress) has cache lines of its own, apart from the job they read, wherever
     // the heap puts the pool.
     std::vector<std::thread> workers_;
+    std::vector<int> cpusAllowed_;  // the CPUs the creating thread could run on
     bool workersEnabled_ = true;
     std::uint64_t jobsOffered_ = 0;  // the caller's own counts
     std::uint64_t sharableJobs_ = 0;
@@ -170,9 +179,12 @@ private:
     // (release) on finishing its part of a phase (phase q is done when they add up to
     // phaseFirstChunk_[q + 1]), and the sum of its chunks' counts (integers: the total is the same
     // whichever thread ran which chunk), written as it leaves the job.
+    // And the CPU the participant was last seen on (-1: not yet, or the platform does not say):
+    // the caller's as it offers a job, a worker's as it waits for one.
     struct alignas(64) Progress {
         std::atomic<std::size_t> chunksRun{0};
         std::uint64_t sum = 0;
+        std::atomic<int> cpu{-1};
     };
     std::vector<Progress> progress_;         // by participant
     std::vector<std::size_t> phaseSize_;     // the current job's, by phase
