@@ -289,8 +289,9 @@ void TestThreads::poolRunsNarrowPhasesOnTheCaller() {
 }
 
 // A worker waiting on the CPU the caller runs on only takes turns with it, and the kernel left such
-// a worker there for tens of steps (task_pool.cpp): the worker must move off by itself, not wait
-// for the kernel to. Here the caller moves onto the worker's CPU.
+// a worker there for tens of steps (task_pool.cpp): the worker must move off by itself. Here the
+// test puts it there: the caller and the worker both pinned to the caller's CPU, where only the
+// worker's own move can take it away.
 void TestThreads::poolWorkerLeavesTheCallersCpu() {
 #if defined(__linux__)
     cpu_set_t callerWas;
@@ -307,22 +308,24 @@ void TestThreads::poolWorkerLeavesTheCallersCpu() {
             });
         }
     };
-    // The worker has run a chunk and waited for the next job somewhere.
-    keepOffering([&] { return worker.load() != 0 && pool.lastCpu(1) >= 0; });
-    const int workerCpu = pool.lastCpu(1);
-    QVERIFY(worker.load() != 0 && workerCpu >= 0);
+    keepOffering([&] { return worker.load() != 0; });  // a chunk ran on the worker
+    QVERIFY(worker.load() != 0);
+    const int callerCpu = sched_getcpu();
     cpu_set_t onlyThere;
     CPU_ZERO(&onlyThere);
-    CPU_SET(workerCpu, &onlyThere);
+    CPU_SET(callerCpu, &onlyThere);
     QCOMPARE(sched_setaffinity(0, sizeof onlyThere, &onlyThere), 0);
-    keepOffering([&] { return pool.lastCpu(0) == workerCpu && pool.lastCpu(1) != workerCpu; });
-    sched_setaffinity(0, sizeof callerWas, &callerWas);
-    QCOMPARE(pool.lastCpu(0), workerCpu);
-    QVERIFY2(pool.lastCpu(1) != workerCpu, "the worker stayed on the caller's CPU");
+    QCOMPARE(sched_setaffinity(worker.load(), sizeof onlyThere, &onlyThere), 0);
     cpu_set_t workerMay;
-    QCOMPARE(sched_getaffinity(worker.load(), sizeof workerMay, &workerMay), 0);
-    QVERIFY2(!CPU_ISSET(workerCpu, &workerMay), "the worker left only because the kernel moved it");
+    const auto workerMayRunThere = [&] {
+        return sched_getaffinity(worker.load(), sizeof workerMay, &workerMay) != 0 || CPU_ISSET(callerCpu, &workerMay);
+    };
+    keepOffering([&] { return !workerMayRunThere(); });
+    keepOffering([&] { return pool.lastCpu(1) >= 0 && pool.lastCpu(1) != callerCpu; });  // seen elsewhere since
+    sched_setaffinity(0, sizeof callerWas, &callerWas);
+    QVERIFY2(!workerMayRunThere(), "the worker stayed on the caller's CPU");
     QVERIFY(CPU_COUNT(&workerMay) > 0);
+    QVERIFY(pool.lastCpu(1) >= 0 && pool.lastCpu(1) != callerCpu);
 #else
     QSKIP("CPU placement is read and set on Linux only");
 #endif
