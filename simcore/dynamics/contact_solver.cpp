@@ -93,7 +93,6 @@ void ContactSolver::prepare(const ContactManager& contactManager, const BodyStor
         if (joint.bodyB.isValid()) jointed_[static_cast<std::size_t>(bodies.denseIndex(joint.bodyB))] = 1;
     }
     assignLanes(contacts, bodies, glm::length(params.gravity) * h, soft);
-    batchWork_ = batches_.size();
 
     // Each batch is filled from its own lanes' contacts, then gets its effective masses: in
     // parallel. Every solver body exists by now, so solverBody only looks them up.

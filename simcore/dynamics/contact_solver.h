@@ -149,9 +149,6 @@ public:
 
     std::size_t constraintCount() const { return constraintCount_; }
     std::size_t colorCount() const { return colorCount_; }
-    // Batches prepared, plus batches solved in every pass since (a pass over a subset counts its
-    // subset): the solver's work in a step, in units that each cost about the same.
-    std::uint64_t batchWork() const { return batchWork_; }
     // Whether any prepared constraint has friction or rolling-resistance rows / can bounce (effects
     // that ran; rolling resistance belongs to the friction effect).
     bool usesFriction() const { return usesFriction_; }
@@ -372,7 +369,6 @@ private:
     Params params_;
     float maxPenetration_ = 0.0f;
     std::size_t constraintCount_ = 0, colorCount_ = 0;
-    std::uint64_t batchWork_ = 0;
     // Colours 0 .. colorsInUse_ - 1 hold manifolds, the overflow aside: a manifold takes the lowest
     // colour free at its bodies, so the colours in use come first.
     std::size_t colorsInUse_ = 0;
@@ -386,8 +382,6 @@ inline bool ContactSolver::forEachBatch(SolveBatch&& solveBatch, bool stiffOnly)
     const std::uint32_t* colorEnd = stiffOnly ? colorStiffEnd_.data() : colorFirstBatch_.data() + 1;
     const std::size_t overflowEnd = colorEnd[kOverflow];
     const auto batchesOf = [&](std::size_t color) { return colorEnd[color] - colorFirstBatch_[color]; };
-    for (std::size_t color = 0; color < colors; ++color) batchWork_ += batchesOf(color);
-    batchWork_ += batchesOf(kOverflow);
     // Colour after colour, as one job (a colour of pyramid10 is a few microseconds of work).
     const std::size_t hits = pool_->parallelSumInPhases(
         colors, kBatchGrain, batchesOf, [&](std::size_t color, std::size_t begin, std::size_t end) {

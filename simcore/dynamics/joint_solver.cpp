@@ -112,11 +112,9 @@ void JointSolver::prepare(JointStorage& joints, const BodyStorage& bodies, const
         if (movesB) c.inverseMassB = bodies.inverseMass[c.bodyB];
         if (j.spring) c.spring = SoftConstraint::make(j.spring->hertz, j.spring->dampingRatio, h);
     }
-    constraintWork_ = constraints_.size();
 }
 
 void JointSolver::warmStart(BodyStorage& bodies) {
-    constraintWork_ += constraints_.size();
     substepGeometry_.resize(constraints_.size());
     substepFactor_.resize(constraints_.size());
     for (std::size_t ci = 0; ci < constraints_.size(); ++ci) {
@@ -157,7 +155,6 @@ void JointSolver::warmStart(BodyStorage& bodies) {
 
 void JointSolver::solve(BodyStorage& bodies, bool useBias) {
     assert(!useBias || substepGeometry_.size() == constraints_.size());  // warmStart came first
-    constraintWork_ += constraints_.size();
     for (std::size_t ci = 0; ci < constraints_.size(); ++ci) {
         const Constraint& c = constraints_[ci];
         Joint& j = joints_->joints[c.joint];

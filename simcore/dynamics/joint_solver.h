@@ -35,8 +35,6 @@ public:
     void solve(BodyStorage& bodies, bool useBias);
 
     std::size_t constraintCount() const { return constraints_.size(); }
-    // Constraints prepared, warm-started and solved since prepare: the solver's work in a step.
-    std::uint64_t constraintWork() const { return constraintWork_; }
 
 private:
     static constexpr std::uint32_t kWorld = 0xFFFFFFFFu;  // dense index standing for the world
@@ -67,7 +65,6 @@ private:
                          const RigidFactor& rigidFactor, bool useBias) const;
 
     std::vector<Constraint> constraints_;
-    std::uint64_t constraintWork_ = 0;
     // Each constraint's geometry and factored mass matrix, from warmStart: the bodies do not move
     // until the substep's positions are integrated, so the velocity passes reuse them; the relax
     // passes, after the move, compute their own.

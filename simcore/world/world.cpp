@@ -133,10 +133,11 @@ void World::step() {
     const auto stepStart = std::chrono::steady_clock::now();
     StepProfile profile;
     StepPlan plan = planStep(profile.skipped);
-    const auto run = [&profile, this](Stage stage, auto&& work) {
+    const bool withWorkers = threads_.startStep();
+    const auto run = [&profile, withWorkers, this](Stage stage, auto&& work) {
         const auto s = static_cast<std::size_t>(stage);
         if (profile.skipped[s] != StageSkip::Ran) return;
-        profile.withWorkers[s] = threads_.startStage(stage);
+        profile.withWorkers[s] = withWorkers;
         const std::uint64_t offered = threads_.pool().jobsOffered();
         {
             ScopedStageTimer timer(profile.stageMs[s]);
@@ -178,7 +179,7 @@ void World::step() {
     run(Stage::Sleep, [&] { sleepRestingIslands(plan); });
 
     finishStep(plan, profile);
-    threads_.learn(profile, solverWork(plan));
+    threads_.learn(profile);
     profile.totalMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - stepStart).count();
     lastProfile_ = profile;
 }
@@ -265,13 +266,6 @@ void World::prepareConstraints(const StepPlan& plan) {
     if (plan.joints) jointSolver_.prepare(joints_, bodies_, {plan.substepDt, settings_.joint});
     // The poses continuous collision sweeps from (it runs only with contacts, so only with this stage).
     if (plan.continuous) recordSweepStarts();
-}
-
-// The work of the solver's stages in the step (WorkerTuner::record): contact batches and joints,
-// prepared and solved, and one for what the stages do whatever they hold.
-double World::solverWork(const StepPlan& plan) const {
-    return static_cast<double>(1 + (plan.solveContacts ? contactSolver_.batchWork() : 0) +
-                               (plan.solveJoints ? jointSolver_.constraintWork() : 0));
 }
 
 // In each pass joints go first and contacts have the last word (Box2D v3's order): penetration

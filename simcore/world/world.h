@@ -61,14 +61,16 @@ struct ContactLoad {
     float normalForce = 0.0f;  // N: their points' normal impulses over the last substep, per second
 };
 
-// The world's worker threads, and which stages use them, learnt at two levels (WorkerTuner):
-// whether a step uses workers at all, from the whole step's time, and in the steps that do, which
-// stages. Choices made stage by stage alone can all look right and add up to a slower step: a
-// stage run with workers leaves its data in both cores' caches for the next, which then looks
-// slower inline than it is (2-core machine, 2026-12-06: pyramid10 at 2 threads took 1.18x the
-// time of 1 thread stage by stage, 1.02x with the step's own choice). A copied world gets a pool
-// of its own with as many threads, made when it first steps, and learns anew: a copy kept as a
-// snapshot holds no threads.
+// The world's worker threads, and whether a step uses them, learnt from the steps' times
+// (WorkerTuner). A step uses them in every stage or in none: a stage run with workers leaves its
+// data in both cores' caches for the next, so stages tuned one by one judged each other's moves
+// (pyramid10 at 2 threads, 2-core machine, 2026-12-06: 1.18x the time of 1 thread stage by stage,
+// 1.02x with the step's own choice), and kept stages inline that gained with workers (the first
+// 100 steps of mixed1k at 2 threads, against 1 thread's, medians of 74 alternating rounds with the
+// cores near, 2026-12-07: 0.72 with the stages tuned under the step, 0.69 with every stage the
+// step's way; pile1k 0.67 and 0.66).
+// A copied world gets a pool of its own with as many threads, made when it first steps, and learns
+// anew: a copy kept as a snapshot holds no threads.
 class WorldThreads {
 public:
     WorldThreads() = default;
@@ -99,20 +101,14 @@ public:
         return *pool_;
     }
 
-    // Sets on the pool whether `stage` runs with workers this step, and returns it. A step that
-    // learns or probes workers runs every stage with them.
-    bool startStage(Stage stage) const {
-        if (!stepUsesWorkers()) return setWorkers(false);
-        return setWorkers(stepTuner_.exploring(0) || stageTuner_.useWorkers(tunerIndex(stage)));
+    // Sets on the pool whether this step's stages run with workers, and returns it.
+    bool startStep() const {
+        const bool withWorkers = pool().threadCount() > 1 && tuner_.useWorkers();
+        pool().setWorkersEnabled(withWorkers);
+        return withWorkers;
     }
     // After a step: what its stages took, as they ran; outside a step the workers are on again.
-    // The stages learn both ways in the steps in which the step does (every stage with workers,
-    // inline, with workers again), and after that only in steps settled on workers: a stage that
-    // learnt in a probe of the step tuner's measured that probe, and stages that had learnt inline
-    // in one made every later probe lose (pyramid10 at 2 threads: 3 runs in 8 kept 1.03-1.15 ms a
-    // step instead of 0.74-0.84, 2026-12-07).
-    // solverWork: World::solverWork, the work of the solver's stages in the step.
-    void learn(const StepProfile& profile, double solverWork) {
+    void learn(const StepProfile& profile) {
         TaskPool& workers = pool();
         // A step with no job the workers could have shared ran the same either way and teaches
         // nothing: a tower's, whose jobs are all too narrow to share (learning from its steps cost
@@ -120,67 +116,30 @@ public:
         const bool anySharable = workers.sharableJobs() != sharableJobsSeen_;
         sharableJobsSeen_ = workers.sharableJobs();
         if (workers.threadCount() > 1 && anySharable) {
-            const bool stagesLearn = stepTuner_.learning(0) || (stepUsesWorkers() && !stepTuner_.exploring(0));
             double stepMs = 0.0;
-            std::array<double, kStageCount> tunedMs{};
-            std::array<bool, kStageCount> tunedRan{};
+            bool anyRan = false;
             for (std::size_t s = 0; s < kStageCount; ++s) {
                 if (profile.skipped[s] != StageSkip::Ran) continue;
                 stepMs += profile.stageMs[s];
-                const std::size_t tuned = tunerIndex(static_cast<Stage>(s));
-                tunedMs[tuned] += profile.stageMs[s];
-                tunedRan[tuned] = true;
+                anyRan = true;
             }
             // A step in which no stage ran (everything asleep) says nothing about either way.
-            const bool anyRan = std::find(tunedRan.begin(), tunedRan.end(), true) != tunedRan.end();
-            if (stagesLearn)
-                for (std::size_t t = 0; t < kStageCount; ++t)
-                    if (tunedRan[t])
-                        stageTuner_.record(t, tunedMs[t], t == tunerIndex(Stage::Solve) ? solverWork : 1.0);
-            if (anyRan) stepTuner_.record(0, stepMs);
+            if (anyRan) tuner_.record(stepMs);
         }
         workers.setWorkersEnabled(true);
     }
 
 private:
-    // The solver's stages deal each colour's batches to the same threads, so that a batch stays in
-    // one core's cache from preparing to storing: they run with workers or inline together. Tuned
-    // one by one, a stage probing workers between inline ones paid for moving the batches and lost,
-    // and so did one probing inline between stages with workers: pile1k's solve kept whichever way
-    // it had first, 0.118 ms a step inline, 0.070 with workers (2026-12-07).
-    static constexpr Stage tunedAs(Stage stage) {
-        switch (stage) {
-        case Stage::WarmStart:
-        case Stage::Solve:
-        case Stage::Restitution:
-        case Stage::Relax:
-        case Stage::StoreImpulses: return Stage::Prepare;
-        default: return stage;
-        }
-    }
-    static std::size_t tunerIndex(Stage stage) { return static_cast<std::size_t>(tunedAs(stage)); }
-    bool setWorkers(bool withWorkers) const {
-        pool().setWorkersEnabled(withWorkers);
-        return withWorkers;
-    }
-    bool stepUsesWorkers() const { return pool().threadCount() > 1 && stepTuner_.useWorkers(0); }
     void forgetTimings() {
-        stepTuner_ = StepTuner(kStepFirstWay);
-        stageTuner_ = StageTuner(kStagesFirstWay);
+        tuner_ = WorkerTuner(kFirstWay);
         sharableJobsSeen_ = pool_ ? pool_->sharableJobs() : 0;
     }
     std::optional<int> threads_;                 // settings.threads (0: one per core)
     mutable std::unique_ptr<TaskPool> pool_;
-    using StageTuner = WorkerTuner<kStageCount>;
-    // Stages learn in the step's own learning steps, in the same order.
-    static constexpr StageTuner::FirstWay kStagesFirstWay = StageTuner::FirstWay::Workers;
-    // The step learns workers first too: a world's first step makes every pair and manifold
-    // (pyramid20: 45-70 ms, then about 12), and its narrow phase and batches then fill on every
-    // core.
-    using StepTuner = WorkerTuner<1>;
-    static constexpr StepTuner::FirstWay kStepFirstWay = StepTuner::FirstWay::Workers;
-    StepTuner stepTuner_{kStepFirstWay};         // the step as a whole
-    StageTuner stageTuner_{kStagesFirstWay};     // each stage, learnt in the steps that use workers
+    // Workers first: a world's first step makes every pair and manifold (pyramid20: 45-70 ms, then
+    // about 12), and its narrow phase and batches then fill on every core.
+    static constexpr WorkerTuner::FirstWay kFirstWay = WorkerTuner::FirstWay::Workers;
+    WorkerTuner tuner_{kFirstWay};
     std::uint64_t sharableJobsSeen_ = 0;         // the pool's sharableJobs() after the last step
 };
 
@@ -363,7 +322,6 @@ private:
     // The stages of step() that are more than one call, in order.
     void prepareConstraints(const StepPlan& plan);
     void warmStart(const StepPlan& plan);
-    double solverWork(const StepPlan& plan) const;
     void solveVelocities(const StepPlan& plan);
     void relaxConstraints(const StepPlan& plan);
     void storeImpulses(const StepPlan& plan, StepCounters& counters);
