@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
@@ -52,6 +53,7 @@ constexpr const char* kRssScene = "pile1k";
 const char* usageText() {
     return "usage: interplay-bench-threads [--scene NAME]... [--steps N] [--repeat R] [--min-time S]\n"
            "                               [--threads T]... [--out FILE] [--scenes-dir DIR]\n"
+           "       interplay-bench-threads --round-trip\n"
            "\n"
            "Steps each benchmark scene at several thread counts (settings.threads) and writes a Markdown\n"
            "table of ms per step (medians of R or more runs, with their range), the speedup over 1 thread,\n"
@@ -67,7 +69,9 @@ const char* usageText() {
            "  --out FILE        where to write the table (default: " INTERPLAY_SOURCE_DIR
            "/bench/results/threads.md;\n"
            "                    '-' prints it only)\n"
-           "  --scenes-dir DIR  where scenes are looked up (default: " INTERPLAY_SOURCE_DIR "/scenes/bench)\n"
+           "  --scenes-dir DIR  where scenes are looked up (default: " INTERPLAY_SOURCE_DIR
+           "/scenes/bench)\n"
+           "  --round-trip      print only the core-to-core round trip now, in ns (for other harnesses)\n"
            "\n"
            "Exit status: 0 done; 2 bad arguments or an unwritable FILE; 3 a scene that cannot be read;\n"
            "4 the thread counts ended in different states (the table is written first).\n";
@@ -81,6 +85,7 @@ struct Options {
     std::vector<int> threads;
     std::string out = INTERPLAY_SOURCE_DIR "/bench/results/threads.md";
     fs::path scenesDir = fs::path(INTERPLAY_SOURCE_DIR) / "scenes" / "bench";
+    bool roundTripOnly = false;
 };
 
 bool parseInt(const std::string& text, int& out, int minimum) {
@@ -123,6 +128,8 @@ std::optional<std::string> parseArguments(int argc, char** argv, Options& option
         int n = 0;
         if (arg == "--help" || arg == "-h") {
             help = true;
+        } else if (arg == "--round-trip") {
+            options.roundTripOnly = true;
         } else if (arg == "--scene") {
             if (!value() || v.empty()) return "--scene needs a scene name";
             options.scenes.push_back(v);
@@ -286,6 +293,10 @@ int main(int argc, char** argv) {
     }
     if (help) {
         std::cout << usageText();
+        return 0;
+    }
+    if (options.roundTripOnly) {
+        std::cout << std::lround(roundTripNs()) << '\n';
         return 0;
     }
 

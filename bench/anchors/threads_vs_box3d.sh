@@ -9,6 +9,10 @@
 #        SCENES="pile1k mixed1k pyramid pyramid20"  REPEATS=3
 # Prints one line per run (ENGINE= THREADS= REP= and the harness's figures), then the medians.
 # THREADS is what ran: interplay_anchor.py's own line says threads=1 whatever its runner adds.
+# Before each 2-thread run, RT= is the core-to-core round trip in ns (interplay-bench-threads
+# --round-trip, next to the runner's build folder, or $BENCH_THREADS): where the host runs the two
+# virtual CPUs on cores that share no cache (350-600 ns against 70-190) neither engine gains from
+# a second thread, and the table's last column gives the range.
 set -uo pipefail
 
 IRUN=$(realpath "${1:-build/app/interplay-run}")
@@ -19,6 +23,8 @@ REPEATS=${REPEATS:-3}
 BOX3D="$A/bin/box3d_bench"
 [[ -x "$BOX3D" ]] || { echo "no $BOX3D: run $ANCHORS/run_anchors.sh with BUILD_ONLY=1 and BOX3D_GIT set" >&2; exit 2; }
 [[ -x "$IRUN" ]] || { echo "no interplay-run at $IRUN" >&2; exit 2; }
+BENCH_THREADS=${BENCH_THREADS:-$(dirname "$IRUN")/../bench/interplay-bench-threads}
+[[ -x "$BENCH_THREADS" ]] || { echo "no interplay-bench-threads at $BENCH_THREADS" >&2; exit 2; }
 
 # interplay_anchor.py runs `RUNNER scene.json --steps N`: a runner that adds --threads 2.
 IRUN2="$A/bin/interplay-run-2-threads"
@@ -27,8 +33,10 @@ printf '#!/bin/sh\nexec "%s" "$@" --threads 2\n' "$IRUN" >"$IRUN2" && chmod +x "
 RES="$A/results/threads-$(date +%Y%m%d-%H%M%S).txt"
 echo "# $(date -u '+%Y-%m-%d %H:%M UTC') $(nproc) cpus $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs); load before $(cut -d' ' -f1-3 /proc/loadavg)" | tee "$RES"
 one() { # one ENGINE THREADS REP CMD...
-    local line; line=$("${@:4}" 2>/dev/null | grep -m1 "mean_ms=") || line="FAILED"
-    echo "ENGINE=$1 THREADS=$2 REP=$3 $line" | tee -a "$RES"
+    local rt="" line
+    [[ $2 -gt 1 ]] && rt="RT=$("$BENCH_THREADS" --round-trip) "
+    line=$("${@:4}" 2>/dev/null | grep -m1 "mean_ms=") || line="FAILED"
+    echo "ENGINE=$1 THREADS=$2 REP=$3 $rt$line" | tee -a "$RES"
 }
 for scene in $SCENES; do
     for rep in $(seq 1 "$REPEATS"); do
@@ -41,17 +49,20 @@ done
 echo "# load after $(cut -d' ' -f1-3 /proc/loadavg)" | tee -a "$RES"
 python3 - "$RES" <<'PY'
 import re, statistics, sys
-runs = {}
+runs, trips = {}, {}
 for line in open(sys.argv[1]):
     kv = dict(t.split("=", 1) for t in line.split() if "=" in t)
     if "mean_ms" in kv:
         runs.setdefault((kv["scene"], kv["ENGINE"], kv["THREADS"]), []).append(float(kv["mean_ms"]))
-print("\n| scene | Box3D 1T | Box3D 2T | Interplay 1T | Interplay 2T | Interplay / Box3D, 1T | 2T | Interplay 2T / 1T speedup |")
-print("|---|--:|--:|--:|--:|--:|--:|--:|")
+    if "RT" in kv and "scene" in kv:
+        trips.setdefault(kv["scene"], []).append(int(kv["RT"]))
+print("\n| scene | Box3D 1T | Box3D 2T | Interplay 1T | Interplay 2T | Interplay / Box3D, 1T | 2T | Interplay 2T / 1T speedup | round trip, ns |")
+print("|---|--:|--:|--:|--:|--:|--:|--:|--:|")
 for scene in dict.fromkeys(s for s, _, _ in runs):
     m = {(e, t): statistics.median(v) for (s, e, t), v in runs.items() if s == scene}
     g = lambda e, t: m.get((e, t), float("nan"))
     print(f"| {scene} | {g('box3d','1'):.3f} | {g('box3d','2'):.3f} | {g('interplay','1'):.3f} | {g('interplay','2'):.3f} | "
-          f"{g('interplay','1')/g('box3d','1'):.2f} | {g('interplay','2')/g('box3d','2'):.2f} | {g('interplay','1')/g('interplay','2'):.2f} |")
+          f"{g('interplay','1')/g('box3d','1'):.2f} | {g('interplay','2')/g('box3d','2'):.2f} | {g('interplay','1')/g('interplay','2'):.2f} | "
+          f"{min(trips.get(scene, [0]))}–{max(trips.get(scene, [0]))} |")
 PY
 echo "raw: $RES"
