@@ -62,11 +62,6 @@ public:
         return probeDue() ? !workersChosen_ : workersChosen_;
     }
 
-    // Whether the tuner is still learning (first way, other way, first way again).
-    bool learning() const { return !learnt(); }
-    // Whether useWorkers() is not the settled choice this step: learning, or a probe.
-    bool exploring() const { return learning() || probeDue(); }
-
     // The time of a step that ran as useWorkers() said.
     void record(double ms) {
         const int way = useWorkers() ? kWorkers : kInline;

@@ -29,7 +29,7 @@ struct StepProfile {
     // substeps. A skipped stage's is zero, or the time it took to find it had nothing to do.
     std::array<double, kStageCount> stageMs{};
     std::array<StageSkip, kStageCount> skipped{};  // why each stage did not run (Ran when it did)
-    std::array<bool, kStageCount> withWorkers{};   // ran on the pool's workers too (WorkerTuner's choice)
+    bool withWorkers = false;  // the stages that ran, ran on the pool's workers too (WorkerTuner's choice)
     std::array<std::uint32_t, kStageCount> handOvers{};  // jobs it offered the workers (TaskPool::jobsOffered)
     double totalMs = 0.0;                       // wall time of the whole step (ms)
     float maxPenetration = 0.0f;                // deepest contact overlap when the step began (m)

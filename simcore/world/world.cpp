@@ -133,11 +133,10 @@ void World::step() {
     const auto stepStart = std::chrono::steady_clock::now();
     StepProfile profile;
     StepPlan plan = planStep(profile.skipped);
-    const bool withWorkers = threads_.startStep();
-    const auto run = [&profile, withWorkers, this](Stage stage, auto&& work) {
+    profile.withWorkers = threads_.startStep();
+    const auto run = [&profile, this](Stage stage, auto&& work) {
         const auto s = static_cast<std::size_t>(stage);
         if (profile.skipped[s] != StageSkip::Ran) return;
-        profile.withWorkers[s] = withWorkers;
         const std::uint64_t offered = threads_.pool().jobsOffered();
         {
             ScopedStageTimer timer(profile.stageMs[s]);
