@@ -73,6 +73,7 @@ private slots:
     void tunerLearnsThroughATrendAndAPreemption();
     void tunerChargesTheStepAfterAProbeToTheProbe();
     void tunerChargesTheStepBackOnlyForMovingTheData();
+    void tunerProbesAgainSoonAfterAProbeTheSceneOutgrew();
     void tunerSwitchesWhenTheOtherWayGetsFaster();
     void tunerProbesSoonWhenAStageGrows();
     void tunerResumesWithoutChargingAProbe();
@@ -244,6 +245,33 @@ void TestWorkerTuner::tunerChargesTheStepBackOnlyForMovingTheData() {
     run(stepBack, landing);
     const auto bigWithWorkers = std::count(landing.begin() + stepBack, landing.begin() + stepBack + 60, true);
     QVERIFY2(bigWithWorkers >= 30, qPrintable(QString("%1 of 60 big steps with workers").arg(bigWithWorkers)));
+}
+
+void TestWorkerTuner::tunerProbesAgainSoonAfterAProbeTheSceneOutgrew() {
+    // pile1k at 2 threads with the cores far apart (2026-12-07): workers won while the boxes fell,
+    // inline won by a quarter as they settled, and the inline probe that could have shown it ran
+    // as the step grew by half. Here workers take 1 ms a step and inline 1.1 until step 100, then
+    // 0.7; from the first inline probe after step 100 on, every step takes 1.6 times as long.
+    const auto run = [](int growthStep) {
+        WorkerTuner tuner(WorkerTuner::FirstWay::Workers);
+        return tune(
+            tuner, 600, [=](int step) { return (step < 100 ? 1.1 : 0.7) * (step >= growthStep ? 1.6 : 1.0); },
+            [=](int step) { return step >= growthStep ? 1.6 : 1.0; });
+    };
+    // Where that probe falls in a scene that does not grow.
+    const std::vector<bool> steady = run(1000);
+    const std::vector<Run> probes = runsWith(std::vector<bool>(steady.begin() + 100, steady.end()), false);
+    QVERIFY(!probes.empty());
+    const int growthStep = 100 + probes.front().first;
+    const std::vector<bool> growing = run(growthStep);
+    // The probe loses (1.12 ms against 1.0 before it) and the workers run on; their steps after it
+    // (1.6 ms) show it lost to the scene, and the next probe comes within kMinProbeInterval steps:
+    // inline from then on, not from the probe after the interval the probes had grown to (128).
+    QCOMPARE(growing[growthStep], false);
+    QCOMPARE(growing[growthStep + 2], true);
+    const int settled = growthStep + 4 + WorkerTuner::kMinProbeInterval + 2;
+    QCOMPARE(std::count(growing.begin() + settled, growing.begin() + settled + WorkerTuner::kMinProbeInterval, false),
+             std::ptrdiff_t{WorkerTuner::kMinProbeInterval});
 }
 
 void TestWorkerTuner::tunerSwitchesWhenTheOtherWayGetsFaster() {

@@ -25,8 +25,10 @@
 // to check), and the next probe also waits until the chosen way has run long enough for the
 // probe's loss (or the learning's, before the first probe) to be at most kProbeCostShare of that
 // time: on a step of microseconds a probe that wakes the workers costs several steps (a tower of 40
-// stepped 0.92x as fast on 2 threads as on 1, 2026-12-06). A probe that wins switches and starts
-// probing often again, as a scene that grows or falls asleep can change the answer.
+// stepped 0.92x as fast on 2 threads as on 1, 2026-12-06). A probe that lost, but took less than
+// the chosen way's steps after it, ran while the scene's step grew: the next one comes soon. A
+// probe that wins switches and starts probing often again, as a scene that grows or falls asleep
+// can change the answer.
 
 #include <algorithm>
 #include <cmath>
@@ -101,6 +103,7 @@ public:
                 probeInterval_ = std::min(2 * probeInterval_, kMaxProbeInterval);
                 const double lossMs = probeMoveMs_ + std::max(0.0, estimateMs_[way] - estimateMs_[chosen()]);
                 msToProbe_ = lossMs / kProbeCostShare;
+                lostProbeMs_ = estimateMs_[way];
             }
             stepsToProbe_ = probeInterval_;
             decidedMs_ = estimateMs_[chosen()];
@@ -114,6 +117,22 @@ public:
             }
             if (stepsToProbe_ > 0) --stepsToProbe_;
             msToProbe_ -= ms;
+            // The first two steps back after a probe that lost: if they took longer than the probe,
+            // the scene's step grew while it ran, and the probe lost to the steps before it, not
+            // to the way. Its loss is not the way's, and the next probe comes soon. pile1k at 2
+            // threads, cores far apart (2026-12-07): an inline probe in step 54 took 1.10 ms
+            // against 0.83 before it, the workers' steps after it 1.3 and 1.1, then 0.73-0.86
+            // where inline took 0.6, and the loss put the next probe off past the scene's sleep.
+            // In 80 rounds with the cores far, 2 threads took 1.046 of 1 thread's time on pile1k
+            // before this and 1.015 after (pyramid10 1.026 -> 1.013, mixed1k 1.023 -> 1.011); in
+            // 1303 rounds with them near, the same time to within 0.4%.
+            if (lostProbeMs_ >= 0.0) {
+                if (lostProbeMs_ < wayMs) {
+                    msToProbe_ = 0.0;
+                    stepsToProbe_ = std::min(stepsToProbe_, kMinProbeInterval);
+                }
+                lostProbeMs_ = -1.0;
+            }
         }
     }
 
@@ -147,6 +166,7 @@ private:
     double probeMoveMs_ = 0.0;     // the probe's first step over the chosen way's estimate
     double previousMs_ = 0.0;      // the last step's time
     double decidedMs_ = 0.0;       // the chosen way's time when it was chosen (or confirmed)
+    double lostProbeMs_ = -1.0;    // a probe that lost: the other way's time in it (negative: none)
     bool lastStepProbed_ = false;  // whether the last step was a probe's
     int lastWay_ = kNone;          // the way the last step ran
 };
