@@ -111,15 +111,14 @@ void TestWorkerTuner::tunerTriesBothWaysThenRunsTheFaster() {
 }
 
 void TestWorkerTuner::tunerProbesLessOftenWhileItsChoiceHolds() {
-    using Tuner = WorkerTuner;
-    Tuner tuner;
+    WorkerTuner tuner;
     // Each probe loses 4 ms against 1 ms steps the chosen way: 2 ms in each of its two steps.
     const std::vector<bool> ways = tune(
         tuner, 2000, [](int) { return 1.0; }, [](int) { return 3.0; });
     const std::vector<Run> probes = runsWith(ways, true);  // the first is the learning of workers
     QVERIFY(probes.size() >= 5);
-    const int coveringSteps = static_cast<int>(std::lround(4.0 / Tuner::kProbeCostShare));  // 200
-    int interval = Tuner::kMinProbeInterval;
+    const int coveringSteps = static_cast<int>(std::lround(4.0 / WorkerTuner::kProbeCostShare));  // 200
+    int interval = WorkerTuner::kMinProbeInterval;
     for (std::size_t p = 1; p < probes.size(); ++p) {
         // Two probe steps, one moving back (after the learning of workers, two: inline is learnt
         // again), then `interval` steps the chosen way, and as many more as the loss of the
@@ -129,13 +128,13 @@ void TestWorkerTuner::tunerProbesLessOftenWhileItsChoiceHolds() {
         const int stepsBack = p == 1 ? 2 : 1;
         const int chosenSteps = std::max(interval, coveringSteps);
         QCOMPARE(probes[p].first - probes[p - 1].first, 2 + stepsBack + chosenSteps);
-        interval = std::min(2 * interval, Tuner::kMaxProbeInterval);
+        interval = std::min(2 * interval, WorkerTuner::kMaxProbeInterval);
     }
-    QCOMPARE(interval, Tuner::kMaxProbeInterval);
+    QCOMPARE(interval, WorkerTuner::kMaxProbeInterval);
     // Learning that loses 40 ms against 0.01 ms steps is followed by 2 s of them (200 000 steps)
     // before the first probe: the tuner spends at most kProbeCostShare of a tiny step's time on
     // probes.
-    Tuner tiny;
+    WorkerTuner tiny;
     const std::vector<bool> tinyWays = tune(
         tiny, 30000, [](int) { return 0.01; }, [](int) { return 20.01; });
     const std::vector<Run> tinyProbes = runsWith(tinyWays, true);
@@ -187,10 +186,9 @@ void TestWorkerTuner::tunerLearnsThroughATrendAndAPreemption() {
 }
 
 void TestWorkerTuner::tunerChargesTheStepAfterAProbeToTheProbe() {
-    using Tuner = WorkerTuner;
     // Inline runs 1 ms a step, a probe with workers 3 ms in each of its steps, and the step after
     // a probe 3 ms too, as it moves the data back: each probe costs 6 ms over the chosen way.
-    Tuner tuner;
+    WorkerTuner tuner;
     bool lastWithWorkers = false;
     double spentMs = 0.0;
     int counted = 0;
@@ -209,19 +207,18 @@ void TestWorkerTuner::tunerChargesTheStepAfterAProbeToTheProbe() {
     // Probes and the steps after them take at most kProbeCostShare of the chosen way's time, and
     // one probe's cost at the end (here 18 ms over 995, three probes).
     const double chosenMs = counted * 1.0;
-    QVERIFY2(spentMs - chosenMs <= Tuner::kProbeCostShare * chosenMs + 6.0,
+    QVERIFY2(spentMs - chosenMs <= WorkerTuner::kProbeCostShare * chosenMs + 6.0,
              qPrintable(QString("%1 ms over %2").arg(spentMs - chosenMs).arg(chosenMs)));
 }
 
 void TestWorkerTuner::tunerChargesTheStepBackOnlyForMovingTheData() {
-    using Tuner = WorkerTuner;
     // mixed1k at 2 threads (2026-12-07): inline was learnt as the faster while the bodies fell, a
     // probe of workers lost against those small steps, and the step back came as the landing
     // tripled the step. Charged in full to the probe, it put off the next one past the landing.
     // Here a step that changes way pays 0.2 ms to move the data; workers lose while the scene is
     // small and take 0.6 of inline's time while it is big (1.5 ms inline for 60 steps).
     const auto run = [](int growthStep, std::vector<bool>& ways) {
-        Tuner tuner(Tuner::FirstWay::Workers);
+        WorkerTuner tuner(WorkerTuner::FirstWay::Workers);
         bool lastWithWorkers = true;
         for (int step = 0; step < growthStep + 80; ++step) {
             const bool big = step >= growthStep && step < growthStep + 60;

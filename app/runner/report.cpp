@@ -14,9 +14,11 @@ nlohmann::ordered_json toJson(const simcore::Quat& q) { return {q.w, q.x, q.y, q
 void addStepProfile(RunSummary& summary, const simcore::StepProfile& profile) {
     for (std::size_t s = 0; s < summary.stageMs.size(); ++s) {
         summary.stageMs[s] += profile.stageMs[s];
-        if (profile.withWorkers && profile.skipped[s] == simcore::StageSkip::Ran) ++summary.stepsWithWorkers[s];
         summary.handOvers[s] += profile.handOvers[s];
-        if (profile.skipped[s] == simcore::StageSkip::Ran) continue;
+        if (profile.skipped[s] == simcore::StageSkip::Ran) {
+            if (profile.withWorkers) ++summary.stepsWithWorkers[s];
+            continue;
+        }
         ++summary.stageSkips[s];
         summary.lastSkip[s] = profile.skipped[s];
     }

@@ -103,7 +103,7 @@ public:
                 probeInterval_ = std::min(2 * probeInterval_, kMaxProbeInterval);
                 const double lossMs = probeMoveMs_ + std::max(0.0, estimateMs_[way] - estimateMs_[chosen()]);
                 msToProbe_ = lossMs / kProbeCostShare;
-                lostProbeMs_ = estimateMs_[way];
+                probeLost_ = true;
             }
             stepsToProbe_ = probeInterval_;
             decidedMs_ = estimateMs_[chosen()];
@@ -126,12 +126,12 @@ public:
             // In 80 rounds with the cores far, 2 threads took 1.046 of 1 thread's time on pile1k
             // before this and 1.015 after (pyramid10 1.026 -> 1.013, mixed1k 1.023 -> 1.011); in
             // 1303 rounds with them near, the same time to within 0.4%.
-            if (lostProbeMs_ >= 0.0) {
-                if (lostProbeMs_ < wayMs) {
+            if (probeLost_) {
+                if (estimateMs_[1 - way] < wayMs) {  // the other way's estimate is the probe's time
                     msToProbe_ = 0.0;
                     stepsToProbe_ = std::min(stepsToProbe_, kMinProbeInterval);
                 }
-                lostProbeMs_ = -1.0;
+                probeLost_ = false;
             }
         }
     }
@@ -166,7 +166,7 @@ private:
     double probeMoveMs_ = 0.0;     // the probe's first step over the chosen way's estimate
     double previousMs_ = 0.0;      // the last step's time
     double decidedMs_ = 0.0;       // the chosen way's time when it was chosen (or confirmed)
-    double lostProbeMs_ = -1.0;    // a probe that lost: the other way's time in it (negative: none)
+    bool probeLost_ = false;       // the last probe lost, and no step since has been compared with it
     bool lastStepProbed_ = false;  // whether the last step was a probe's
     int lastWay_ = kNone;          // the way the last step ran
 };
