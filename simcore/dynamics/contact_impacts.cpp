@@ -15,7 +15,7 @@ void ContactSolver::currentInverseInertia(const std::int32_t (&solverBodies)[kLa
 }
 
 void ContactSolver::resolveCollisions(BodyStorage& bodies, ImpactTiming timing) {
-    loadVelocities(bodies);
+    startFromVelocities(bodies);
     const FloatW zero = FloatW::zero(), one = FloatW::splat(1.0f);
     const FloatW threshold = FloatW::splat(-params_.contact.restitutionThreshold);
     const FloatW h = FloatW::splat(params_.substepDt);

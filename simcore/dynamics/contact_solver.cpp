@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <utility>
 
 namespace simcore {
 
@@ -75,6 +76,7 @@ void ContactSolver::prepare(const ContactManager& contactManager, const BodyStor
     params_ = params;
     pool_ = &pool;
     maxPenetration_ = 0.0f;
+    velocitiesHeld_ = false;
     usesFriction_ = false;
     usesRestitution_ = false;
 
@@ -340,6 +342,10 @@ void ContactSolver::loadMotion(const BodyStorage& bodies) {
     });
 }
 
+void ContactSolver::startFromVelocities(const BodyStorage& bodies) {
+    if (!std::exchange(velocitiesHeld_, false)) loadVelocities(bodies);
+}
+
 void ContactSolver::storeVelocities(BodyStorage& bodies) const {
     forEachSolverBody([&](std::size_t s) {
         const BodyReference& ref = references_[s];
@@ -350,8 +356,8 @@ void ContactSolver::storeVelocities(BodyStorage& bodies) const {
     });
 }
 
-void ContactSolver::warmStart(BodyStorage& bodies) {
-    loadVelocities(bodies);
+void ContactSolver::warmStart(BodyStorage& bodies, AfterWarmStart after) {
+    startFromVelocities(bodies);
     float* rows = velocities_.data()->value;
     forEachBatch([&](const ManifoldBatch& c) {
         WideBodies v = gatherVelocities(rows, c.bodyA, c.bodyB);
@@ -367,11 +373,12 @@ void ContactSolver::warmStart(BodyStorage& bodies) {
         scatterVelocities(rows, c.storeA, c.storeB, v);
         return false;
     });
-    storeVelocities(bodies);
+    if (after == AfterWarmStart::HoldForSolve) velocitiesHeld_ = true;
+    else storeVelocities(bodies);
 }
 
 bool ContactSolver::solve(BodyStorage& bodies, bool useBias, int passes) {
-    loadVelocities(bodies);
+    startFromVelocities(bodies);
     bool unsettled = false;
     for (int pass = 0; pass < passes; ++pass) {
         // A relax pass says whether push is left; a biased one whether a stiffened manifold's rows
@@ -385,7 +392,7 @@ bool ContactSolver::solve(BodyStorage& bodies, bool useBias, int passes) {
 }
 
 bool ContactSolver::relaxWherePushing(BodyStorage& bodies, int passes) {
-    loadVelocities(bodies);
+    startFromVelocities(bodies);
     bool pushLeft = true;
     for (int i = 0; pushLeft && i < passes; ++i) pushLeft = solvePass(false, PassScope::Pushing);
     storeVelocities(bodies);
@@ -394,7 +401,7 @@ bool ContactSolver::relaxWherePushing(BodyStorage& bodies, int passes) {
 
 void ContactSolver::settleOnSupports(BodyStorage& bodies) {
     if (supportDepth_.empty()) return;
-    loadVelocities(bodies);
+    startFromVelocities(bodies);
     const float inverseH = 1.0f / params_.substepDt;
     const auto jointed = [this](std::size_t s) { return jointedBody(references_[s].denseIndex); };
     for (ManifoldBatch& c : batches_) {

@@ -64,7 +64,12 @@ public:
     // bodies take part with infinite mass. The passes until the next prepare run on `pool`.
     void prepare(const ContactManager& contactManager, const BodyStorage& bodies, const JointStorage& joints,
                  const Params& params, TaskPool& pool);
-    void warmStart(BodyStorage& bodies);
+    // After the warm start the velocities go back to the bodies, or stay in the solver's rows for
+    // the solve that follows, where nothing else reads or changes them in between (no joints):
+    // storing 1000 bodies' velocities only to load them again took both passes over every body,
+    // and with 2 threads carried every row to the caller and back.
+    enum class AfterWarmStart { Store, HoldForSolve };
+    void warmStart(BodyStorage& bodies, AfterWarmStart after);
     // The bodies moved (a substep's position update): the passes after this one see the new
     // separations. Positions stand still between position updates, so the passes in between share
     // the bodies' motion since prepare and each manifold's separations.
@@ -286,6 +291,8 @@ private:
     bool touchesChange(const ManifoldBatch& c) const;
     static void computeEffectiveMasses(ManifoldBatch& batch);
     void loadVelocities(const BodyStorage& bodies);
+    // The rows a pass sequence starts from: the bodies' velocities, or the rows the warm start held.
+    void startFromVelocities(const BodyStorage& bodies);
     void loadMotion(const BodyStorage& bodies);
     void storeVelocities(BodyStorage& bodies) const;
     // visit(s) for every solver body s but the immovable one, on the pool's threads.
@@ -332,6 +339,7 @@ private:
     TaskPool* pool_ = nullptr;                 // prepare's
     std::vector<BodyRow> velocities_, motion_;  // by solver body
     std::uint32_t motionCount_ = 0;             // motion_ loaded since prepare, counting prepare's
+    bool velocitiesHeld_ = false;               // velocities_ hold the warm start's velocities, not yet stored
     std::vector<BodyReference> references_;    // by solver body; entry 0 is the immovable body
     // Kept between steps with the colouring (colourManifolds):
     std::vector<std::int32_t> denseToSolver_;  // -1 where a body has no solver entry

@@ -271,7 +271,9 @@ void World::prepareConstraints(const StepPlan& plan) {
 // shows more than joint stretch.
 void World::warmStart(const StepPlan& plan) {
     if (plan.solveJoints) jointSolver_.warmStart(bodies_);
-    if (plan.solveContacts) contactSolver_.warmStart(bodies_);
+    if (plan.solveContacts)
+        contactSolver_.warmStart(bodies_, plan.solveJoints ? ContactSolver::AfterWarmStart::Store
+                                                           : ContactSolver::AfterWarmStart::HoldForSolve);
 }
 
 namespace {
