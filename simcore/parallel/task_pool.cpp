@@ -1,6 +1,7 @@
 #include "simcore/parallel/task_pool.h"
 
 #include <chrono>
+#include <utility>
 
 #if defined(__linux__)
 #include <sched.h>
@@ -108,16 +109,26 @@ void TaskPool::run(const Job& job) {
     }
     progress_[0].cpu.store(currentCpu(), std::memory_order_relaxed);
     generation_.fetch_add(1);  // odd: open; publishes job_ to the workers that see it
-    // One wake-up call until a worker answers it: a job every few microseconds would otherwise make
-    // a system call each while the workers take tens of microseconds to wake (a stage the tuner
-    // probes with workers after a spell without them).
-    if (sleepingWorkers_.load() > 0 && !wakeCalled_.exchange(true)) {
-        { std::lock_guard lock(mutex_); }  // as in the destructor
-        wake_.notify_all();
-    }
+    wakeSleepingWorkers();
     runChunks(0);
     generation_.fetch_add(1);  // even: closed to latecomers
     for (int spins = 0; busyWorkers_.load() > 0; ++spins) pause(spins);
+}
+
+// One wake-up call until a worker goes to sleep again: a job every few microseconds would otherwise
+// make a system call each while the workers take tens of microseconds to wake (a stage the tuner
+// probes with workers after a spell without them). The flag is cleared by a worker as it goes to
+// sleep, under the mutex, not as it wakes: cleared on waking, it could be set again by a call that
+// found the worker already awake, and then no call reached it when it next slept: a worker asleep
+// through every later job, whose chunks the caller then ran alone.
+void TaskPool::wakeSleepingWorkers() {
+    if (sleepingWorkers_.load() == 0) return;
+    bool call = false;
+    {
+        std::lock_guard lock(mutex_);
+        call = !std::exchange(wakeCalled_, true);
+    }
+    if (call) wake_.notify_all();
 }
 
 // A worker that joins late goes through the phases already done, finding no chunk left in them.
@@ -170,9 +181,9 @@ std::uint64_t TaskPool::awaitGeneration(std::uint64_t seen, int participant) {
     }
     std::unique_lock lock(mutex_);
     sleepingWorkers_.fetch_add(1);  // before the check: run() either sees it or is seen by it
+    wakeCalled_ = false;            // this sleep needs a call of its own
     wake_.wait(lock, [&] { return stopping_.load() || generation_.load() != seen; });
     sleepingWorkers_.fetch_sub(1);
-    wakeCalled_.store(false);  // answered: a worker that sleeps from now on needs a new call
     return generation_.load();
 }
 

@@ -141,6 +141,7 @@ private:
     }
     void growPhases(std::size_t phases);
     void run(const Job& job);
+    void wakeSleepingWorkers();
     void workerLoop(int participant);
     // Takes chunks of the current job until none is left: first from the participant's own share,
     // then from the others'.
@@ -191,7 +192,7 @@ private:
     std::vector<std::size_t> phaseFirstChunk_;  // by phase, and one past the last: chunks before it
     alignas(64) std::atomic<int> busyWorkers_{0};  // workers in the current job
     std::atomic<int> sleepingWorkers_{0};    // workers blocked on wake_ (changed under mutex_)
-    std::atomic<bool> wakeCalled_{false};    // notified, and no worker has woken from it yet
+    bool wakeCalled_ = false;                // notified since a worker last went to sleep (under mutex_)
     std::atomic<bool> stopping_{false};
     std::mutex mutex_;  // only for sleeping and waking
     std::condition_variable wake_;
