@@ -102,6 +102,7 @@ void ContactSolver::colourManifolds(const ContactManager& contactManager, const 
         colorEntries_[colorFirstEntry_[colorOf_[k]] + filled[colorOf_[k]]++] = static_cast<std::uint32_t>(k);
     batches_.resize(batchCount);  // cleared in prepare, batch by batch in parallel (megabytes in pyramid20)
     colouredManifoldList_ = contactManager.manifoldListVersion();
+    forgetSchedules();
 }
 
 void ContactSolver::refreshBodyReferences(const BodyStorage& bodies) {
@@ -134,31 +135,104 @@ void ContactSolver::assignLanes(const std::vector<Contact>& contacts, const Body
             stiffening_[k] = stiffening;
         }
     });
+    // Last step's lanes are kept to compare: while the lanes stay, so do the schedules (makeSchedule).
+    previousLanes_.swap(laneConstraint_);
     laneConstraint_.resize(batches_.size() * kLanes);
+    const bool comparable = previousLanes_.size() == laneConstraint_.size();
+    const std::array<std::uint32_t, kColorCount + 1> previousStiffEnd = colorStiffEnd_;
     const std::size_t colors = colorsInUse_;  // and the overflow after them
     // The colours are this loop's chunks, of uneven sizes: shared out only when the manifolds are
     // more than one chunk of the loop above. A tower's two colours of ten woke a sleeping worker in
     // every step that tried workers, for less work than the wake-up.
     const std::size_t colorsPerChunk = order_.size() > kEntryGrain ? 1 : colors + 1;
-    pool_->parallelFor(colors + 1, colorsPerChunk, [&](std::size_t, std::size_t begin, std::size_t end) {
-        for (std::size_t index = begin; index < end; ++index) {
-            const std::size_t color = index < colors ? index : kOverflow;
-            const std::uint32_t* first = colorEntries_.data() + colorFirstEntry_[color];
-            const std::uint32_t* last = colorEntries_.data() + colorFirstEntry_[color + 1];
-            const auto stiff = static_cast<std::uint32_t>(
-                std::count_if(first, last, [this](std::uint32_t k) { return stiffening_[k] > 1.0f; }));
-            const std::uint32_t lanes = color == kOverflow ? 1 : kLanes;
-            colorStiffEnd_[color] = colorFirstBatch_[color] + (stiff + lanes - 1) / lanes;
-            std::uint32_t* lane = laneConstraint_.data() + colorFirstBatch_[color] * kLanes;
-            std::fill(lane, laneConstraint_.data() + colorFirstBatch_[color + 1] * kLanes, kNoConstraint);
-            std::uint32_t filledStiff = 0, filledPlain = stiff;
-            for (const std::uint32_t* k = first; k != last; ++k) {
-                const std::uint32_t slot = stiffening_[*k] > 1.0f ? filledStiff++ : filledPlain++;
-                lane[slot / lanes * kLanes + slot % lanes] = *k;
+    const std::uint64_t changedColors =
+        pool_->parallelSum(colors + 1, colorsPerChunk, [&](std::size_t begin, std::size_t end) {
+            std::uint64_t changed = 0;
+            for (std::size_t index = begin; index < end; ++index) {
+                const std::size_t color = index < colors ? index : kOverflow;
+                const std::uint32_t* first = colorEntries_.data() + colorFirstEntry_[color];
+                const std::uint32_t* last = colorEntries_.data() + colorFirstEntry_[color + 1];
+                const auto stiff = static_cast<std::uint32_t>(
+                    std::count_if(first, last, [this](std::uint32_t k) { return stiffening_[k] > 1.0f; }));
+                const std::uint32_t lanes = color == kOverflow ? 1 : kLanes;
+                colorStiffEnd_[color] = colorFirstBatch_[color] + (stiff + lanes - 1) / lanes;
+                std::uint32_t* lane = laneConstraint_.data() + colorFirstBatch_[color] * kLanes;
+                std::fill(lane, laneConstraint_.data() + colorFirstBatch_[color + 1] * kLanes, kNoConstraint);
+                std::uint32_t filledStiff = 0, filledPlain = stiff;
+                for (const std::uint32_t* k = first; k != last; ++k) {
+                    const std::uint32_t slot = stiffening_[*k] > 1.0f ? filledStiff++ : filledPlain++;
+                    lane[slot / lanes * kLanes + slot % lanes] = *k;
+                }
+                const std::size_t from = colorFirstBatch_[color] * kLanes, to = colorFirstBatch_[color + 1] * kLanes;
+                if (!comparable || colorStiffEnd_[color] != previousStiffEnd[color] ||
+                    !std::equal(lane, laneConstraint_.data() + to, previousLanes_.data() + from))
+                    ++changed;
             }
-        }
-    });
+            return changed;
+        });
     for (std::size_t color = colors; color < kOverflow; ++color) colorStiffEnd_[color] = colorFirstBatch_[color];
+    if (changedColors > 0) forgetSchedules();
+}
+
+void ContactSolver::makeSchedule(BatchSchedule& schedule, const std::uint32_t* colorEnd, std::size_t threads) {
+    const std::size_t colors = colorsInUse_;
+    const auto shareBegin = [&](std::size_t color, std::size_t share) {
+        const std::size_t first = colorFirstBatch_[color], count = colorEnd[color] - first;
+        return static_cast<std::uint32_t>(first + count * share / threads);
+    };
+    schedule.threads = threads;
+    schedule.shareStart.assign(threads + 1, 0);
+    for (std::size_t share = 0; share < threads; ++share) {
+        std::uint32_t size = 0;
+        for (std::size_t color = 0; color < colors; ++color)
+            size += shareBegin(color, share + 1) - shareBegin(color, share);
+        schedule.shareStart[share + 1] = schedule.shareStart[share] + size;
+    }
+    schedule.batches.resize(schedule.shareStart[threads]);
+    schedule.required.assign(schedule.batches.size() * threads, 0);
+    // A batch's moving bodies (one that does not move is only read: its lanes write to scratch rows).
+    const auto forEachMovingBody = [this](std::size_t batch, auto&& visit) {
+        const ManifoldBatch& c = batches_[batch];
+        for (int lane = 0; lane < kLanes; ++lane) {
+            if (c.storeA[lane] == c.bodyA[lane]) visit(static_cast<std::size_t>(c.bodyA[lane]));
+            if (c.storeB[lane] == c.bodyB[lane]) visit(static_cast<std::size_t>(c.bodyB[lane]));
+        }
+    };
+    // Colour by colour, each share's batches in an order of their own: those touching a body that
+    // another share touched last go after the rest, so that the other share has longer to get
+    // there. Within a colour no two batches share a moving body, so a share's batches see the
+    // colours before through lastShare_ and lastStep_, whatever the shares before it in the colour
+    // wrote there.
+    constexpr std::uint32_t kNoShare = ~std::uint32_t{0};
+    lastShare_.assign(references_.size(), kNoShare);
+    lastStep_.resize(references_.size());
+    std::array<std::uint32_t, kMaxScheduledThreads> next{};  // each share's next entry
+    std::copy_n(schedule.shareStart.begin(), threads, next.begin());
+    for (std::size_t color = 0; color < colors; ++color) {
+        for (std::uint32_t share = 0; share < threads; ++share) {
+            const std::uint32_t begin = shareBegin(color, share), end = shareBegin(color, share + 1);
+            std::uint32_t* const segment = schedule.batches.data() + next[share];
+            std::uint32_t *first = segment, *last = segment + (end - begin);
+            for (std::uint32_t k = begin; k < end; ++k) {
+                bool crosses = false;
+                forEachMovingBody(k, [&](std::size_t body) {
+                    crosses = crosses || (lastShare_[body] != kNoShare && lastShare_[body] != share);
+                });
+                *(crosses ? --last : first++) = k;
+            }
+            for (std::uint32_t entry = next[share]; entry < next[share] + (end - begin); ++entry) {
+                const std::uint32_t step = entry - schedule.shareStart[share] + 1;
+                std::uint32_t* required = schedule.required.data() + std::size_t{entry} * threads;
+                forEachMovingBody(schedule.batches[entry], [&](std::size_t body) {
+                    if (lastShare_[body] != kNoShare && lastShare_[body] != share)
+                        required[lastShare_[body]] = std::max(required[lastShare_[body]], lastStep_[body]);
+                    lastShare_[body] = share;
+                    lastStep_[body] = step;
+                });
+            }
+            next[share] += end - begin;
+        }
+    }
 }
 
 }  // namespace simcore

@@ -331,11 +331,40 @@ private:
     // Returns whether solveBatch returned true for any.
     template <class SolveBatch>
     bool forEachBatch(SolveBatch&& solveBatch, bool stiffOnly = false);
+    // How forEachBatch runs the colours on more than one thread: each thread solves its share of
+    // every colour in turn (the shares forEachColorSlice fills), and waits before a batch only for
+    // the batches of other shares that last touched its moving bodies, not for the whole colour
+    // before. Each batch still reads the rows as the colour before left them, so the results are
+    // those of solving colour after colour. With every thread waiting for the others at each colour's
+    // end instead, those waits were about 5% of pyramid10's step at 2 threads, cores near (as the
+    // step without them, which races), each a hand-over between the cores.
+    struct BatchSchedule {
+        std::size_t threads = 0;                // its shares; 0: not made since prepare
+        std::vector<std::uint32_t> batches;     // each share's batches in solve order, share after share
+        std::vector<std::uint32_t> shareStart;  // by share, and one past the last
+        std::vector<std::uint32_t> required;    // by entry of batches, then share: that share's batches done first
+    };
+    static constexpr std::size_t kMaxScheduledThreads = 64;
+    // Scheduled only where a colour has at most this many batches a thread on average: a colour's
+    // wait then costs about a tenth of its work (cores near). Longer colours lost more to making
+    // the schedule (70 us a step in pyramid20, whose lanes change every step) and to shares that
+    // cannot take over each other's batches than the waits cost: near, pyramid20 (80 batches a
+    // thread) took 3.5-4.5% longer a step at 2 threads, pile1k (30) 1-2.5%, mixed1k (25) 2-3%,
+    // where pyramid10 (10) took 4% less (2026-12-08).
+    static constexpr std::size_t kScheduledBatchesPerThread = 16;
+    void makeSchedule(BatchSchedule& schedule, const std::uint32_t* colorEnd, std::size_t threads);
 
     std::vector<ManifoldBatch, LargeArrayAllocator<ManifoldBatch>> batches_;  // colour by colour
     std::array<std::uint32_t, kColorCount + 2> colorFirstBatch_{};  // colour c: [first[c], first[c + 1])
     // Colour c's batches holding a stiffened manifold: [first[c], stiffEnd[c]).
     std::array<std::uint32_t, kColorCount + 1> colorStiffEnd_{};
+    // Of every batch, of those holding a stiffened manifold: kept while the colours and lanes stay
+    // (a resting pyramid's from step to step), since making one visits every lane.
+    std::array<BatchSchedule, 2> schedules_;
+    void forgetSchedules() {
+        for (BatchSchedule& schedule : schedules_) schedule.threads = 0;
+    }
+    std::vector<std::uint32_t> lastShare_, lastStep_;  // scratch: by solver body (makeSchedule)
     TaskPool* pool_ = nullptr;                 // prepare's
     std::vector<BodyRow> velocities_, motion_;  // by solver body
     std::uint32_t motionCount_ = 0;             // motion_ loaded since prepare, counting prepare's
@@ -356,6 +385,7 @@ private:
     bool jointedPair(std::size_t a, std::size_t b) const { return jointedBody(a) || jointedBody(b); }
     static constexpr std::uint32_t kNoConstraint = ~std::uint32_t{0};
     std::vector<std::uint32_t> laneConstraint_;  // scratch: by batch and lane, an index into order_
+    std::vector<std::uint32_t> previousLanes_;   // laneConstraint_ as the step before left it
     std::vector<float> batchPenetration_;        // scratch: by batch, its points' deepest overlap (m)
     // By solver body: the last pass in which a row changed a moving body's velocity by more than
     // the pass's tolerance (kStiffTolerance in a velocity pass, where only stiffened manifolds mark,
@@ -390,14 +420,44 @@ inline bool ContactSolver::forEachBatch(SolveBatch&& solveBatch, bool stiffOnly)
     const std::uint32_t* colorEnd = stiffOnly ? colorStiffEnd_.data() : colorFirstBatch_.data() + 1;
     const std::size_t overflowEnd = colorEnd[kOverflow];
     const auto batchesOf = [&](std::size_t color) { return colorEnd[color] - colorFirstBatch_[color]; };
-    // Colour after colour, as one job (a colour of pyramid10 is a few microseconds of work).
-    const std::size_t hits = pool_->parallelSumInPhases(
-        colors, kBatchGrain, batchesOf, [&](std::size_t color, std::size_t begin, std::size_t end) {
+    const auto threads = static_cast<std::size_t>(pool_->activeThreadCount());
+    std::size_t widestChunks = 0, batches = 0;
+    for (std::size_t color = 0; color < colors; ++color) {
+        widestChunks = std::max(widestChunks, TaskPool::chunkCount(batchesOf(color), kBatchGrain));
+        batches += batchesOf(color);
+    }
+    // Colours of at most a chunk per thread run on this one (TaskPool::parallelSumInPhases).
+    const bool shared = threads > 1 && widestChunks > 1 && (colors == 1 || widestChunks > threads);
+    std::uint64_t hits = 0;
+    if (shared && threads <= kMaxScheduledThreads && batches <= kScheduledBatchesPerThread * threads * colors) {
+        BatchSchedule& schedule = schedules_[stiffOnly ? 1 : 0];
+        if (schedule.threads != threads) makeSchedule(schedule, colorEnd, threads);
+        hits = pool_->runSequences([&](std::size_t share) {
+            std::array<std::uint32_t, kMaxScheduledThreads> seen{};  // each share's steps as last read
+            const std::uint32_t first = schedule.shareStart[share], end = schedule.shareStart[share + 1];
             std::uint64_t count = 0;
-            for (std::size_t k = colorFirstBatch_[color] + begin; k < colorFirstBatch_[color] + end; ++k)
-                if (solveBatch(batches_[k])) ++count;
+            for (std::uint32_t entry = first; entry < end; ++entry) {
+                const std::uint32_t* required = schedule.required.data() + std::size_t{entry} * threads;
+                for (std::size_t other = 0; other < threads; ++other) {
+                    if (required[other] <= seen[other]) continue;
+                    pool_->publishSteps(share, entry - first);  // so that the other's waits end
+                    seen[other] = pool_->awaitSteps(other, required[other]);
+                }
+                if (solveBatch(batches_[schedule.batches[entry]])) ++count;
+                pool_->publishSteps(share, entry + 1 - first);
+            }
             return count;
         });
+    } else {
+        // Colour after colour, as one job.
+        hits = pool_->parallelSumInPhases(
+            colors, kBatchGrain, batchesOf, [&](std::size_t color, std::size_t begin, std::size_t end) {
+                std::uint64_t count = 0;
+                for (std::size_t k = colorFirstBatch_[color] + begin; k < colorFirstBatch_[color] + end; ++k)
+                    if (solveBatch(batches_[k])) ++count;
+                return count;
+            });
+    }
     bool any = hits > 0;
     // The overflow's batches may share moving bodies: one after another.
     for (std::size_t k = colorFirstBatch_[kOverflow]; k < overflowEnd; ++k)

@@ -131,6 +131,14 @@ void TaskPool::wakeSleepingWorkers() {
     if (call) wake_.notify_all();
 }
 
+std::uint32_t TaskPool::awaitSteps(std::size_t sequence, std::uint32_t steps) {
+    for (int spins = 0;; ++spins) {
+        const std::uint32_t done = progress_[sequence].stepsDone.load(std::memory_order_acquire);
+        if (done >= steps) return done;
+        pause(spins);
+    }
+}
+
 // A worker that joins late goes through the phases already done, finding no chunk left in them.
 void TaskPool::runChunks(int participant) {
     const Job& job = job_;

@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cassert>
 #include <condition_variable>
 #include <cstddef>
 #include <cstdint>
@@ -124,6 +125,29 @@ public:
         return sum;
     }
 
+    // Sequences of steps that wait for one another's steps, one sequence per thread: calls
+    // sequence(s) for s = 0 .. threadCount() - 1 at once, each on a thread of its own, and returns
+    // the sum of what they return. Within sequence s, publishSteps(s, n) says it has done n steps
+    // and awaitSteps(t, n) waits until sequence t has said at least n, after which s may read what
+    // those steps wrote. One thread could not run them in turn (a sequence may wait for a later
+    // one), so only while activeThreadCount() > 1. (A thread that finishes its own sequence may
+    // then run one that no thread has started: every sequence it could wait for has started.)
+    template <class Sequence>
+    std::uint64_t runSequences(Sequence&& sequence) {
+        assert(activeThreadCount() > 1);
+        for (Progress& progress : progress_) progress.stepsDone.store(0, std::memory_order_relaxed);
+        return parallelSum(progress_.size(), 1, [&](std::size_t begin, std::size_t end) {
+            std::uint64_t sum = 0;
+            for (std::size_t s = begin; s < end; ++s) sum += sequence(s);
+            return sum;
+        });
+    }
+    void publishSteps(std::size_t sequence, std::uint32_t steps) {
+        progress_[sequence].stepsDone.store(steps, std::memory_order_release);
+    }
+    // Returns the steps sequence t had done when it returned: at least `steps`.
+    std::uint32_t awaitSteps(std::size_t sequence, std::uint32_t steps);
+
 private:
     // A job without its type, so workers need no std::function (which may allocate): call(context,
     // phase, chunk, begin, end) for the chunks of each phase, the phases' sizes in phaseSize_; it
@@ -184,6 +208,7 @@ private:
     // the caller's as it offers a job, a worker's as it waits for one.
     struct alignas(64) Progress {
         std::atomic<std::size_t> chunksRun{0};
+        std::atomic<std::uint32_t> stepsDone{0};  // of sequence p, in runSequences
         std::uint64_t sum = 0;
         std::atomic<int> cpu{-1};
     };
