@@ -339,7 +339,7 @@ private:
     // end instead, those waits were about 5% of pyramid10's step at 2 threads, cores near (as the
     // step without them, which races), each a hand-over between the cores.
     struct BatchSchedule {
-        std::size_t threads = 0;                // its shares; 0: not made since prepare
+        std::size_t threads = 0;                // its shares; 0: none made for these lanes
         std::vector<std::uint32_t> batches;     // each share's batches in solve order, share after share
         std::vector<std::uint32_t> shareStart;  // by share, and one past the last
         std::vector<std::uint32_t> required;    // by entry of batches, then share: that share's batches done first
