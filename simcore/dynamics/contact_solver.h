@@ -426,8 +426,8 @@ inline bool ContactSolver::forEachBatch(SolveBatch&& solveBatch, bool stiffOnly)
         widestChunks = std::max(widestChunks, TaskPool::chunkCount(batchesOf(color), kBatchGrain));
         batches += batchesOf(color);
     }
-    // Colours of at most a chunk per thread run on this one (TaskPool::parallelSumInPhases).
-    const bool shared = threads > 1 && widestChunks > 1 && (colors == 1 || widestChunks > threads);
+    // Colours too narrow to share run on this thread, either way.
+    const bool shared = threads > 1 && TaskPool::phasesShareable(colors, widestChunks, threads);
     std::uint64_t hits = 0;
     if (shared && threads <= kMaxScheduledThreads && batches <= kScheduledBatchesPerThread * threads * colors) {
         BatchSchedule& schedule = schedules_[stiffOnly ? 1 : 0];

@@ -77,6 +77,16 @@ public:
         run({call, &body, grain, 1});
     }
 
+    // Whether phases run one after another, the widest of widestChunks chunks, give `threads`
+    // threads work to share. Phases of at most one chunk per thread leave no thread anything to
+    // take over from a slower one, only a wait at the end of every phase, and each chunk there is
+    // a few hundred nanoseconds of work, about what that wait costs (tower20 solves two colours of
+    // ten manifolds, one chunk each; a tower of 40 two of twenty, two chunks each: with workers
+    // its steps took 2-5 us longer, and learning and probing them cost 1 % of its run).
+    static bool phasesShareable(std::size_t phases, std::size_t widestChunks, std::size_t threads) {
+        return widestChunks > 1 && (phases <= 1 || widestChunks > threads);
+    }
+
     // Sums count(begin, end) over the chunks of [0, count), as parallelFor runs them. Each thread
     // adds up the counts of the chunks it ran and the caller adds the threads' sums: integers, so
     // the total is the same for any thread count, and no count is a variable threads share.
@@ -104,14 +114,8 @@ public:
             chunks += phaseChunks;
         }
         phaseFirstChunk_[phases] = chunks;
-        // Phases of at most one chunk per thread leave no thread anything to take over from a
-        // slower one, only a wait at the end of every phase, and each chunk there is a few hundred
-        // nanoseconds of work, about what that wait costs (tower20 solves two colours of ten
-        // manifolds, one chunk each; a tower of 40 two of twenty, two chunks each: with workers
-        // its steps took 2-5 us longer, and learning and probing them cost 1 % of its run).
-        const bool phasesTooNarrow = widestPhase <= 1 || (phases > 1 && widestPhase <= progress_.size());
         std::uint64_t sum = 0;
-        if (!sharable(!phasesTooNarrow) || !workersEnabled_) {
+        if (!sharable(phasesShareable(phases, widestPhase, progress_.size())) || !workersEnabled_) {
             for (std::size_t q = 0; q < phases; ++q)
                 for (std::size_t k = 0, n = phaseFirstChunk_[q + 1] - phaseFirstChunk_[q]; k < n; ++k)
                     sum += countChunk(q, k * grain, std::min(phaseSize_[q], (k + 1) * grain));
